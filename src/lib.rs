@@ -1,0 +1,5 @@
+//! Lamella: rectifying strip patterns (Wang, Wang, Schling, Pottmann, SIGGRAPH Asia 2023).
+pub mod mesh;
+pub mod solver;
+pub mod field;
+pub mod surfaces;
