@@ -7,11 +7,7 @@ use super::Vec3;
 pub(crate) fn face_normals_and_areas(positions: &[Vec3], faces: &[[u32; 3]]) -> (Vec<Vec3>, Vec<f64>) {
     faces
         .iter()
-        .map(|face| {
-            let cross = Triangle::of(positions, face).cross();
-            let norm = cross.norm();
-            (cross / norm, 0.5 * norm)
-        })
+        .map(|face| Triangle::of(positions, face).normal_and_area())
         .unzip()
 }
 

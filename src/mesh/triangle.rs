@@ -27,11 +27,19 @@ impl Triangle {
         (self.0[1] - self.0[0]).cross(&(self.0[2] - self.0[0]))
     }
 
+    /// Unit normal of the winding and the area, scaled before normalising so that tiny or huge
+    /// coordinates do not underflow or overflow the squared norm.
+    pub(crate) fn normal_and_area(&self) -> (Vec3, f64) {
+        let cross = self.cross();
+        let norm = scaled_norm(&cross);
+        (cross / norm, 0.5 * norm)
+    }
+
     /// Dot product and cross-product norm of the two edges leaving corner `i`.
     fn corner_dot_and_sine(&self, i: usize) -> (f64, f64) {
         let a = self.0[(i + 1) % 3] - self.0[i];
         let b = self.0[(i + 2) % 3] - self.0[i];
-        (a.dot(&b), a.cross(&b).norm())
+        (a.dot(&b), scaled_norm(&a.cross(&b)))
     }
 
     /// Interior angle at corner `i`, in [0, π].
@@ -69,6 +77,16 @@ impl Triangle {
         let longest_sq = u.norm_squared().max(v.norm_squared()).max(w.norm_squared());
         let twice_area = u.cross(&(-w)).norm();
         !(twice_area > ZERO_AREA_RELATIVE * longest_sq)
+    }
+}
+
+/// Euclidean norm computed as max|v_i| · ‖v / max|v_i|‖ (no intermediate under- or overflow).
+fn scaled_norm(v: &Vec3) -> f64 {
+    let scale = v.amax();
+    if scale > 0.0 {
+        scale * (v / scale).norm()
+    } else {
+        0.0
     }
 }
 

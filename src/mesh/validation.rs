@@ -10,11 +10,14 @@
 //!    (on the faces with valid indices);
 //! 7. more than one connected component;
 //! 8. not a disk with holes (only checked once the faces are all valid and form a connected,
-//!    consistently oriented manifold, since boundary loops and χ are meaningless otherwise).
+//!    consistently oriented manifold, since boundary loops and χ are meaningless otherwise);
+//! 9. derived geometry out of the range of f64 (checked on the built mesh, so only when
+//!    everything else passed).
 
 use super::error::MeshError;
 use super::topology::{self, BoundaryEdge, EdgeTable};
 use super::triangle::Triangle;
+use super::trimesh::TriMesh;
 use super::Vec3;
 
 /// Topology of a mesh that passed validation.
@@ -42,6 +45,12 @@ impl Findings {
 pub fn diagnose(positions: &[Vec3], faces: &[[u32; 3]]) -> Vec<MeshError> {
     let mut findings = Findings { errors: Vec::new(), first_only: false };
     run_checks(positions, faces, &mut findings);
+    if findings.errors.is_empty() {
+        // The last check (numeric range of the derived geometry) needs the built mesh.
+        if let Err(error) = TriMesh::from_vertices_and_faces(positions.to_vec(), faces.to_vec()) {
+            findings.errors.push(error);
+        }
+    }
     findings.errors
 }
 
@@ -123,7 +132,7 @@ fn run_checks(positions: &[Vec3], faces: &[[u32; 3]], findings: &mut Findings) -
         });
     }
     let all_faces_valid = index_ok.iter().all(|&ok| ok);
-    if findings.stop() || !manifold_and_oriented || !all_faces_valid || components.len() > 1 {
+    if findings.stop() || !manifold_and_oriented || !all_faces_valid || components.len() != 1 {
         return None;
     }
     let boundary_edges = table.boundary_edges();
