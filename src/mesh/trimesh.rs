@@ -62,7 +62,7 @@ impl TriMesh {
 
     /// Computes all derived data of a validated mesh.
     fn build(positions: Vec<Vec3>, faces: Vec<[u32; 3]>, topology: ValidTopology) -> TriMesh {
-        let ValidTopology { edges, boundary_edges, mut boundary_loops } = topology;
+        let ValidTopology { edges, boundary_edges, boundary_loops: loops } = topology;
         let (face_normals, face_areas) = face_normals_and_areas(&positions, &faces);
         let vertex_normals = vertex_normals(&positions, &faces, &face_normals);
         let vertex_areas = mixed_voronoi_areas(&positions, &faces, &face_areas);
@@ -76,16 +76,16 @@ impl TriMesh {
         let face_gradients = face_gradients(&positions, &faces, &face_normals, &face_areas);
         let edge_length = |e: &[u32; 2]| (positions[e[1] as usize] - positions[e[0] as usize]).norm();
         let mean_edge_length = edges.iter().map(edge_length).sum::<f64>() / edges.len() as f64;
+        // Summed in increasing order, so loops with the same edge lengths tie exactly.
         let loop_length = |l: &Vec<u32>| {
-            (0..l.len()).map(|i| edge_length(&[l[i], l[(i + 1) % l.len()]])).sum::<f64>()
+            let mut lengths: Vec<f64> = (0..l.len()).map(|i| edge_length(&[l[i], l[(i + 1) % l.len()]])).collect();
+            lengths.sort_by(f64::total_cmp);
+            lengths.iter().sum::<f64>()
         };
         // Outer (longest) loop first; ties by vertex count, then by start vertex.
-        boundary_loops.sort_by(|a, b| {
-            loop_length(b)
-                .total_cmp(&loop_length(a))
-                .then(b.len().cmp(&a.len()))
-                .then(a[0].cmp(&b[0]))
-        });
+        let mut keyed: Vec<(f64, Vec<u32>)> = loops.into_iter().map(|l| (loop_length(&l), l)).collect();
+        keyed.sort_by(|(la, a), (lb, b)| lb.total_cmp(la).then(b.len().cmp(&a.len())).then(a[0].cmp(&b[0])));
+        let boundary_loops: Vec<Vec<u32>> = keyed.into_iter().map(|(_, l)| l).collect();
         let bounding_box = positions.iter().skip(1).fold((positions[0], positions[0]), |(lo, hi), p| {
             (lo.inf(p), hi.sup(p))
         });
