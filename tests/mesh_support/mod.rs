@@ -47,7 +47,7 @@ pub fn compact((positions, faces): Soup) -> Soup {
 }
 
 /// Applies `map` to every position.
-pub fn mapped((positions, faces): Soup, map: impl Fn(Vec3) -> Vec3) -> Soup {
+pub fn mapped((positions, faces): Soup, map: impl FnMut(Vec3) -> Vec3) -> Soup {
     (positions.into_iter().map(map).collect(), faces)
 }
 
