@@ -1,0 +1,111 @@
+//! Parallel evaluation of the residual blocks: at x with Jacobians into per-block slots (plus
+//! each block's Jᵀr and Gram products of its global columns), and at trial points without them.
+use rayon::prelude::*;
+
+use super::segments::try_for_each_segment;
+use super::structure::BlockStructure;
+use super::{LeastSquaresProblem, SolverError};
+
+/// ‖r‖² of one block.
+pub(crate) fn squared_norm(r: &[f64]) -> f64 {
+    r.iter().map(|v| v * v).sum()
+}
+
+/// E = Σ_b ‖r_b‖², summed in block order (the one summation order used everywhere).
+pub(crate) fn sum_in_block_order(norms: impl Iterator<Item = f64>) -> f64 {
+    norms.fold(0.0, |acc, v| acc + v)
+}
+
+/// Evaluates every block at `x` into its slot. Errors name the lowest non-finite block.
+pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
+    problem: &P,
+    structure: &BlockStructure,
+    x: &[f64],
+    slots: &mut [f64],
+) -> Result<(), SolverError> {
+    let failed = try_for_each_segment(slots, &structure.slot_ptr, &|b, slot| {
+        let s = structure.split_slot(b, slot);
+        s.residuals.fill(0.0);
+        s.jacobian.fill(0.0);
+        problem.evaluate_block(b, x, s.residuals, Some(s.jacobian));
+        if !s.residuals.iter().chain(s.jacobian.iter()).all(|v| v.is_finite()) {
+            return false;
+        }
+        let n = s.gradient.len();
+        // Jᵀr.
+        for (a, ga) in s.gradient.iter_mut().enumerate() {
+            *ga = s.residuals.iter().enumerate().map(|(r, &rv)| s.jacobian[r * n + a] * rv).sum();
+        }
+        // Upper Gram of the global columns, in the order of the pattern's gram targets.
+        let positions = structure.global_positions(b);
+        let mut t = 0;
+        for (i, &pi) in positions.iter().enumerate() {
+            for &pj in &positions[i..] {
+                s.gram[t] = column_dot(s.jacobian, n, pi as usize, pj as usize);
+                t += 1;
+            }
+        }
+        true
+    });
+    match failed {
+        None => Ok(()),
+        Some(block) => {
+            let m = structure.residual_count(block);
+            let residuals = &slots[structure.slot_ptr[block]..structure.slot_ptr[block] + m];
+            if residuals.iter().all(|v| v.is_finite()) {
+                Err(SolverError::NonFiniteJacobian { block })
+            } else {
+                Err(SolverError::NonFiniteResidual { block })
+            }
+        }
+    }
+}
+
+/// Dot product of columns `a` and `c` of a row-major matrix with `n` columns.
+pub(crate) fn column_dot(matrix: &[f64], n: usize, a: usize, c: usize) -> f64 {
+    matrix.chunks_exact(n).map(|row| row[a] * row[c]).sum()
+}
+
+/// E(x) from residuals evaluated into `residuals` (segmented by `residual_ptr`), or `None` if any
+/// residual is not finite.
+pub(crate) fn evaluate_energy_into<P: LeastSquaresProblem>(
+    problem: &P,
+    structure: &BlockStructure,
+    x: &[f64],
+    residuals: &mut [f64],
+) -> Option<f64> {
+    let failed = try_for_each_segment(residuals, &structure.residual_ptr, &|b, r| {
+        r.fill(0.0);
+        problem.evaluate_block(b, x, r, None);
+        r.iter().all(|v| v.is_finite())
+    });
+    if failed.is_some() {
+        return None;
+    }
+    let norms = (0..structure.block_count())
+        .map(|b| squared_norm(&residuals[structure.residual_ptr[b]..structure.residual_ptr[b + 1]]));
+    Some(sum_in_block_order(norms))
+}
+
+/// E(x) without any workspace: per-block norms in parallel, summed in block order. Non-finite
+/// residuals or a wrong length of `x` give +∞.
+pub(crate) fn evaluate_energy_standalone<P: LeastSquaresProblem>(problem: &P, x: &[f64]) -> f64 {
+    if x.len() != problem.variable_count() {
+        return f64::INFINITY;
+    }
+    let norms: Vec<f64> = (0..problem.block_count())
+        .into_par_iter()
+        .map_init(Vec::new, |r, b| {
+            r.clear();
+            r.resize(problem.block_residual_count(b), 0.0);
+            problem.evaluate_block(b, x, r, None);
+            squared_norm(r)
+        })
+        .collect();
+    let energy = sum_in_block_order(norms.into_iter());
+    if energy.is_finite() {
+        energy
+    } else {
+        f64::INFINITY
+    }
+}

@@ -1,0 +1,257 @@
+//! Adaptive Levenberg–Marquardt (Madsen, Nielsen & Tingleff 2004, Alg. 3.16, damping matrix
+//! D = I) on the sparse normal equations, with Schur elimination of local variable groups.
+//! Used for the level-set field optimisation of the paper (Sec. 3.2.2, Eq. 8–12).
+use rayon::prelude::*;
+
+use super::assembly::{assemble_reduced, reduce_blocks};
+use super::evaluation::{evaluate_energy_into, evaluate_energy_standalone, evaluate_slots};
+use super::normal_pattern::NormalPattern;
+use super::schur::GroupSystem;
+use super::sparse_cholesky::SparseCholesky;
+use super::structure::{analyse, BlockStructure, GroupStructure};
+use super::{Convergence, IterationOutcome, LeastSquaresProblem, LmOptions, SolverError};
+
+/// Upper bound of the damping growth factor ν (it doubles on every rejection).
+const MAX_GROWTH: f64 = 1e12;
+
+/// Solver state: fixed pattern, symbolic factorisation, workspaces, μ and ν.
+pub struct LevenbergMarquardt {
+    options: LmOptions,
+    blocks: BlockStructure,
+    groups: GroupStructure,
+    pattern: NormalPattern,
+    /// `None` when there are no global variables.
+    cholesky: Option<SparseCholesky>,
+    systems: Vec<GroupSystem>,
+    slots: Vec<f64>,
+    trial_residuals: Vec<f64>,
+    gradient: Vec<f64>,
+    hessian: Vec<f64>,
+    reduced: Vec<f64>,
+    step: Vec<f64>,
+    trial_x: Vec<f64>,
+    mu: Option<f64>,
+    nu: f64,
+}
+
+impl LevenbergMarquardt {
+    /// Validates the problem (variable indices in range, no duplicates, layout consistent: each
+    /// block touches ≤ 1 local group), builds the fixed sparsity pattern of the (reduced) normal
+    /// matrix and its symbolic Cholesky analysis (AMD ordering) once.
+    pub fn new<P: LeastSquaresProblem>(problem: &P, options: LmOptions) -> Result<Self, SolverError> {
+        let (blocks, groups) = analyse(problem)?;
+        let pattern = NormalPattern::build(&blocks, &groups);
+        let cholesky = if pattern.dimension() > 0 {
+            Some(SparseCholesky::analyse(pattern.col_ptr.clone(), pattern.row_idx.clone())?)
+        } else {
+            None
+        };
+        let systems = (0..groups.group_count())
+            .map(|l| GroupSystem::new(groups.size(l), groups.globals(l).len()))
+            .collect();
+        let n = blocks.variable_count;
+        let nnz = pattern.row_idx.len();
+        Ok(Self {
+            options,
+            systems,
+            slots: vec![0.0; blocks.slot_ptr[blocks.block_count()]],
+            trial_residuals: vec![0.0; blocks.residual_ptr[blocks.block_count()]],
+            gradient: vec![0.0; n],
+            hessian: vec![0.0; nnz],
+            reduced: vec![0.0; nnz],
+            step: vec![0.0; n],
+            trial_x: vec![0.0; n],
+            mu: None,
+            nu: 2.0,
+            blocks,
+            groups,
+            pattern,
+            cholesky,
+        })
+    }
+
+    /// Current damping μ (0 before the first iteration or after [`Self::reset_damping`]).
+    pub fn damping(&self) -> f64 {
+        self.mu.unwrap_or(0.0)
+    }
+
+    /// The next [`Self::iterate`] re-initialises μ from `tau` (call after weights change).
+    pub fn reset_damping(&mut self) {
+        self.mu = None;
+        self.nu = 2.0;
+    }
+
+    /// Energy E(x) = Σ_b ‖r_b(x)‖² without Jacobians (parallel, deterministic: per-block squared
+    /// norms summed in block order). Non-finite residuals or a wrong length of `x` give +∞.
+    pub fn evaluate_energy<P: LeastSquaresProblem>(problem: &P, x: &[f64]) -> f64 {
+        evaluate_energy_standalone(problem, x)
+    }
+
+    /// One Levenberg–Marquardt iteration at x (x updated in place only if a step is accepted).
+    ///
+    /// Evaluates residuals and Jacobians at x, solves (JᵀJ + μI) h = −Jᵀr (Schur-reduced), and
+    /// accepts h when the gain ratio ρ = (E(x) − E(x+h)) / (L(0) − L(h)) is positive, with
+    /// L(0) − L(h) = hᵀ(μh − Jᵀr) for E = ‖r‖². Accepted: μ ← μ·max(1/3, 1 − (2ρ − 1)³), ν ← 2;
+    /// rejected (including failed factorisations and non-finite trial energies): μ ← μν, ν ← 2ν,
+    /// and the damped system is re-solved without re-evaluating Jacobians, up to `max_trials`.
+    /// Never accepts a step that raises E.
+    pub fn iterate<P: LeastSquaresProblem>(&mut self, problem: &P, x: &mut [f64]) -> Result<IterationOutcome, SolverError> {
+        self.check_unchanged(problem, x)?;
+        evaluate_slots(problem, &self.blocks, x, &mut self.slots)?;
+        let energy = reduce_blocks(&self.blocks, &self.pattern, &mut self.slots, &mut self.gradient, &mut self.hessian);
+        {
+            let (blocks, groups, slots, gradient) = (&self.blocks, &self.groups, &self.slots, &self.gradient);
+            self.systems
+                .par_iter_mut()
+                .enumerate()
+                .for_each(|(l, system)| system.accumulate(l, blocks, groups, slots, gradient));
+        }
+        let gradient_norm_inf = self.gradient.iter().fold(0.0, |m: f64, g| m.max(g.abs()));
+        let mu = match self.mu {
+            Some(mu) => mu,
+            None => self.initial_damping(),
+        };
+        self.mu = Some(mu);
+        let mut outcome = IterationOutcome {
+            energy_before: energy,
+            energy_after: energy,
+            accepted: false,
+            trials: 0,
+            damping: mu,
+            gradient_norm_inf,
+            step_norm: 0.0,
+            converged: None,
+        };
+        if gradient_norm_inf <= self.options.gradient_tolerance {
+            outcome.converged = Some(Convergence::SmallGradient);
+            return Ok(outcome);
+        }
+        if energy <= self.options.energy_tolerance {
+            outcome.converged = Some(Convergence::SmallEnergy);
+            return Ok(outcome);
+        }
+        let x_norm = x.iter().map(|v| v * v).sum::<f64>().sqrt();
+        let mut factorised_once = false;
+        while outcome.trials < self.options.max_trials {
+            outcome.trials += 1;
+            let mu = self.damping();
+            if self.solve_damped(mu) {
+                factorised_once = true;
+                outcome.step_norm = self.step.iter().map(|h| h * h).sum::<f64>().sqrt();
+                let eps2 = self.options.step_tolerance;
+                if outcome.step_norm <= eps2 * (x_norm + eps2) {
+                    outcome.converged = Some(Convergence::SmallStep);
+                    return Ok(outcome);
+                }
+                // L(0) − L(h) = hᵀ(μh − g) for E = ‖r‖² and (JᵀJ + μI)h = −g.
+                let predicted: f64 = self.step.iter().zip(&self.gradient).map(|(h, g)| h * (mu * h - g)).sum();
+                for ((t, xi), h) in self.trial_x.iter_mut().zip(x.iter()).zip(&self.step) {
+                    *t = xi + h;
+                }
+                let trial = evaluate_energy_into(problem, &self.blocks, &self.trial_x, &mut self.trial_residuals);
+                if let Some(trial_energy) = trial.filter(|&e| e < energy && predicted > 0.0) {
+                    let rho = (energy - trial_energy) / predicted;
+                    let factor = (1.0 - (2.0 * rho - 1.0).powi(3)).max(1.0 / 3.0);
+                    self.set_damping(mu * factor);
+                    self.nu = 2.0;
+                    x.copy_from_slice(&self.trial_x);
+                    outcome.accepted = true;
+                    outcome.energy_after = trial_energy;
+                    outcome.damping = self.damping();
+                    if trial_energy <= self.options.energy_tolerance {
+                        outcome.converged = Some(Convergence::SmallEnergy);
+                    }
+                    return Ok(outcome);
+                }
+            }
+            self.set_damping(mu * self.nu);
+            self.nu = (2.0 * self.nu).min(MAX_GROWTH);
+            outcome.damping = self.damping();
+        }
+        if factorised_once || self.options.max_trials == 0 {
+            Ok(outcome)
+        } else {
+            Err(SolverError::FactorizationFailed { trials: outcome.trials })
+        }
+    }
+
+    /// μ₀ = tau · max diag(JᵀJ) over global and local variables (tau itself for a zero Jacobian).
+    fn initial_damping(&self) -> f64 {
+        let global_max = self.pattern.diagonal.iter().fold(0.0, |m: f64, &d| m.max(self.hessian[d]));
+        let max_diagonal = self.systems.iter().fold(global_max, |m, s| m.max(s.max_diagonal()));
+        let scale = if max_diagonal > 0.0 { max_diagonal } else { 1.0 };
+        self.clamp_damping(self.options.tau * scale)
+    }
+
+    fn clamp_damping(&self, mu: f64) -> f64 {
+        if mu.is_nan() {
+            return self.options.max_damping;
+        }
+        mu.clamp(self.options.min_damping, self.options.max_damping.max(self.options.min_damping))
+    }
+
+    fn set_damping(&mut self, mu: f64) {
+        self.mu = Some(self.clamp_damping(mu));
+    }
+
+    /// Solves the damped normal equations for the step h (into `self.step`). Returns `false` if a
+    /// factorisation fails or the step is not finite.
+    fn solve_damped(&mut self, mu: f64) -> bool {
+        let eliminated = self.systems.par_iter_mut().map(|system| system.eliminate(mu)).all(|ok| ok);
+        if !eliminated {
+            return false;
+        }
+        let g = self.blocks.global_count;
+        let (global_step, _) = self.step.split_at_mut(g);
+        assemble_reduced(
+            &self.pattern,
+            &self.groups,
+            &self.systems,
+            &self.hessian,
+            &self.gradient[..g],
+            mu,
+            &mut self.reduced,
+            global_step,
+        );
+        if let Some(cholesky) = self.cholesky.as_mut() {
+            if !cholesky.factorize(&self.reduced) {
+                return false;
+            }
+            cholesky.solve_in_place(global_step);
+        }
+        {
+            let (global_step, groups) = (&self.step[..g], &self.groups);
+            self.systems
+                .par_iter_mut()
+                .enumerate()
+                .for_each(|(l, system)| system.back_substitute(groups.globals(l), global_step));
+        }
+        for (l, system) in self.systems.iter().enumerate() {
+            self.step[self.groups.starts[l]..self.groups.starts[l + 1]].copy_from_slice(system.step.as_slice());
+        }
+        self.step.iter().all(|h| h.is_finite())
+    }
+
+    /// The counts the workspaces were sized for must still hold.
+    fn check_unchanged<P: LeastSquaresProblem>(&self, problem: &P, x: &[f64]) -> Result<(), SolverError> {
+        let n = self.blocks.variable_count;
+        if x.len() != n {
+            return Err(SolverError::WrongVariableCount { expected: n, found: x.len() });
+        }
+        let changed = |message: String| Err(SolverError::ProblemChanged { message });
+        if problem.variable_count() != n {
+            return changed(format!("variable count {} != {n}", problem.variable_count()));
+        }
+        if problem.block_count() != self.blocks.block_count() {
+            return changed(format!("block count {} != {}", problem.block_count(), self.blocks.block_count()));
+        }
+        for b in 0..self.blocks.block_count() {
+            if problem.block_residual_count(b) != self.blocks.residual_count(b)
+                || problem.block_variables(b) != self.blocks.variables(b)
+            {
+                return changed(format!("structure of block {b} changed"));
+            }
+        }
+        Ok(())
+    }
+}

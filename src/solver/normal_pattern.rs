@@ -1,0 +1,141 @@
+//! Fixed sparsity pattern of the reduced normal matrix S over the global variables
+//! (upper triangle, CSC), and the scatter maps from block and group products to its value array.
+//!
+//! S has an entry (i, j) when i and j are global variables of one block without a local group, or
+//! global variables of one local group (the Schur-complement fill), plus the whole diagonal.
+use super::structure::{triangle_len, BlockStructure, GroupStructure};
+
+pub(crate) struct NormalPattern {
+    pub col_ptr: Vec<usize>,
+    pub row_idx: Vec<usize>,
+    /// Position of the diagonal entry of each column.
+    pub diagonal: Vec<usize>,
+    /// `gram_targets[gram_ptr[b]..]`: for each upper pair (i ≤ j) of block b's global positions,
+    /// in the order of its Gram slot, the value position in S.
+    pub gram_ptr: Vec<usize>,
+    pub gram_targets: Vec<usize>,
+    /// `schur_targets[schur_ptr[l]..]`: for each upper pair (i ≤ j) of group l's sorted globals, the
+    /// value position in S.
+    pub schur_ptr: Vec<usize>,
+    pub schur_targets: Vec<usize>,
+}
+
+impl NormalPattern {
+    pub fn build(blocks: &BlockStructure, groups: &GroupStructure) -> Self {
+        let g = blocks.global_count;
+        // Cliques: sorted global variable sets whose squares make up the pattern.
+        let mut clique_ptr = vec![0];
+        let mut clique_vars: Vec<u32> = Vec::new();
+        for b in 0..blocks.block_count() {
+            if blocks.group[b].is_none() && blocks.global_positions(b).len() > 1 {
+                let vars = blocks.variables(b);
+                let start = clique_vars.len();
+                clique_vars.extend(blocks.global_positions(b).iter().map(|&p| vars[p as usize]));
+                clique_vars[start..].sort_unstable();
+                clique_ptr.push(clique_vars.len());
+            }
+        }
+        for l in 0..groups.group_count() {
+            if groups.globals(l).len() > 1 {
+                clique_vars.extend_from_slice(groups.globals(l));
+                clique_ptr.push(clique_vars.len());
+            }
+        }
+        let (col_ptr, row_idx) = upper_pattern(g, &clique_ptr, &clique_vars);
+        let mut pattern = Self {
+            diagonal: Vec::with_capacity(g),
+            col_ptr,
+            row_idx,
+            gram_ptr: vec![0],
+            gram_targets: Vec::new(),
+            schur_ptr: vec![0],
+            schur_targets: Vec::new(),
+        };
+        for j in 0..g {
+            let d = pattern.position(j, j);
+            pattern.diagonal.push(d);
+        }
+        for b in 0..blocks.block_count() {
+            let vars = blocks.variables(b);
+            let positions = blocks.global_positions(b);
+            pattern.gram_targets.reserve(triangle_len(positions.len()));
+            for (i, &pi) in positions.iter().enumerate() {
+                for &pj in &positions[i..] {
+                    let target = pattern.position(vars[pi as usize] as usize, vars[pj as usize] as usize);
+                    pattern.gram_targets.push(target);
+                }
+            }
+            pattern.gram_ptr.push(pattern.gram_targets.len());
+        }
+        for l in 0..groups.group_count() {
+            let set = groups.globals(l);
+            for (i, &vi) in set.iter().enumerate() {
+                for &vj in &set[i..] {
+                    let target = pattern.position(vi as usize, vj as usize);
+                    pattern.schur_targets.push(target);
+                }
+            }
+            pattern.schur_ptr.push(pattern.schur_targets.len());
+        }
+        pattern
+    }
+
+    pub fn dimension(&self) -> usize {
+        self.col_ptr.len() - 1
+    }
+
+    /// Value position of entry (a, b) of the symmetric matrix (stored as (min, max)).
+    fn position(&self, a: usize, b: usize) -> usize {
+        let (row, col) = if a <= b { (a, b) } else { (b, a) };
+        let rows = &self.row_idx[self.col_ptr[col]..self.col_ptr[col + 1]];
+        // Invariant: the pattern was built from the very cliques and diagonal queried here.
+        let offset = rows.binary_search(&row).expect("normal pattern contains every clique pair");
+        self.col_ptr[col] + offset
+    }
+}
+
+/// Upper-triangular CSC pattern (sorted rows) of the union of the squared cliques and the diagonal.
+fn upper_pattern(n: usize, clique_ptr: &[usize], clique_vars: &[u32]) -> (Vec<usize>, Vec<usize>) {
+    let clique_count = clique_ptr.len() - 1;
+    // Transpose: the cliques containing each variable.
+    let mut member_ptr = vec![0usize; n + 1];
+    for &v in clique_vars {
+        member_ptr[v as usize + 1] += 1;
+    }
+    for j in 0..n {
+        member_ptr[j + 1] += member_ptr[j];
+    }
+    let mut fill = member_ptr.clone();
+    let mut members = vec![0u32; clique_vars.len()];
+    for c in 0..clique_count {
+        for &v in &clique_vars[clique_ptr[c]..clique_ptr[c + 1]] {
+            members[fill[v as usize]] = c as u32;
+            fill[v as usize] += 1;
+        }
+    }
+    let mut marker = vec![usize::MAX; n];
+    let mut col_ptr = Vec::with_capacity(n + 1);
+    col_ptr.push(0);
+    let mut row_idx = Vec::new();
+    for j in 0..n {
+        let start = row_idx.len();
+        marker[j] = j;
+        row_idx.push(j);
+        for &c in &members[member_ptr[j]..member_ptr[j + 1]] {
+            let c = c as usize;
+            for &i in &clique_vars[clique_ptr[c]..clique_ptr[c + 1]] {
+                let i = i as usize;
+                if i >= j {
+                    break;
+                }
+                if marker[i] != j {
+                    marker[i] = j;
+                    row_idx.push(i);
+                }
+            }
+        }
+        row_idx[start..].sort_unstable();
+        col_ptr.push(row_idx.len());
+    }
+    (col_ptr, row_idx)
+}
