@@ -1,1 +1,26 @@
-//! placeholder
+//! The triangle mesh: a validated, immutable [`TriMesh`] (a topological disk, possibly with
+//! holes, paper Sec. 7) with the differential-geometry data the level-set optimiser needs:
+//! normals, mixed Voronoi areas, ordered vertex stars (Fig. 7), per-face gradient operators,
+//! boundary loops, and unit scaling.
+
+mod error;
+mod gradient;
+mod normals;
+mod obj;
+mod scaling;
+mod star;
+mod topology;
+mod triangle;
+mod trimesh;
+mod union_find;
+mod validation;
+mod voronoi_area;
+
+pub use error::MeshError;
+pub use star::VertexStar;
+pub use topology::BoundaryEdge;
+pub use trimesh::TriMesh;
+pub use validation::diagnose;
+
+/// A point or vector in 3-space.
+pub type Vec3 = nalgebra::Vector3<f64>;

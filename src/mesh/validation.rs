@@ -1,0 +1,167 @@
+//! Validation of a candidate mesh: every check of [`MeshError`], in a fixed order.
+//!
+//! Order (the constructors report the first failure, [`diagnose`] all of them):
+//! 1. no vertices, no faces;
+//! 2. non-finite coordinates (by vertex, then axis);
+//! 3. index out of range, then repeated index (by face, then corner);
+//! 4. zero-area faces (faces with valid indices and finite corners);
+//! 5. isolated vertices;
+//! 6. non-manifold edges, non-manifold vertices, inconsistent orientation
+//!    (on the faces with valid indices);
+//! 7. more than one connected component;
+//! 8. not a disk with holes (only checked once the faces are all valid and form a connected,
+//!    consistently oriented manifold, since boundary loops and χ are meaningless otherwise).
+
+use super::error::MeshError;
+use super::topology::{self, BoundaryEdge, EdgeTable};
+use super::triangle::Triangle;
+use super::Vec3;
+
+/// Topology of a mesh that passed validation.
+pub(crate) struct ValidTopology {
+    pub(crate) edges: Vec<[u32; 2]>,
+    pub(crate) boundary_edges: Vec<BoundaryEdge>,
+    /// Unordered boundary loops (see [`topology::trace_boundary_loops`]).
+    pub(crate) boundary_loops: Vec<Vec<u32>>,
+}
+
+/// Collects errors; in "first only" mode the checks stop after the first failing stage.
+struct Findings {
+    errors: Vec<MeshError>,
+    first_only: bool,
+}
+
+impl Findings {
+    fn stop(&self) -> bool {
+        self.first_only && !self.errors.is_empty()
+    }
+}
+
+/// Every problem in a candidate mesh (not only the first), for a validation report.
+/// Empty if and only if [`super::TriMesh::from_vertices_and_faces`] accepts the input.
+pub fn diagnose(positions: &[Vec3], faces: &[[u32; 3]]) -> Vec<MeshError> {
+    let mut findings = Findings { errors: Vec::new(), first_only: false };
+    run_checks(positions, faces, &mut findings);
+    findings.errors
+}
+
+/// Validates the mesh, returning its topology or the first problem in the documented order.
+pub(crate) fn validate(positions: &[Vec3], faces: &[[u32; 3]]) -> Result<ValidTopology, MeshError> {
+    let mut findings = Findings { errors: Vec::new(), first_only: true };
+    let topology = run_checks(positions, faces, &mut findings);
+    match (findings.errors.into_iter().next(), topology) {
+        (Some(error), _) => Err(error),
+        (None, Some(topology)) => Ok(topology),
+        // Internal invariant: without errors the checks reach the end and return the topology.
+        (None, None) => unreachable!("validation ended without topology or error"),
+    }
+}
+
+/// Runs the checks in order; returns the topology if every check was reached and passed.
+fn run_checks(positions: &[Vec3], faces: &[[u32; 3]], findings: &mut Findings) -> Option<ValidTopology> {
+    if positions.is_empty() {
+        findings.errors.push(MeshError::NoVertices);
+    }
+    if faces.is_empty() {
+        findings.errors.push(MeshError::NoFaces);
+    }
+    if findings.stop() {
+        return None;
+    }
+    let finite: Vec<bool> = positions.iter().map(|p| p.iter().all(|c| c.is_finite())).collect();
+    for (vertex, p) in positions.iter().enumerate() {
+        for axis in (0..3).filter(|&axis| !p[axis].is_finite()) {
+            findings.errors.push(MeshError::NonFiniteCoordinate { vertex, axis });
+        }
+    }
+    if findings.stop() {
+        return None;
+    }
+    let index_ok = check_indices(positions.len(), faces, &mut findings.errors);
+    if findings.stop() {
+        return None;
+    }
+    for (face, corners) in faces.iter().enumerate() {
+        if index_ok[face]
+            && corners.iter().all(|&i| finite[i as usize])
+            && Triangle::of(positions, corners).is_degenerate()
+        {
+            findings.errors.push(MeshError::ZeroAreaFace { face });
+        }
+    }
+    if findings.stop() {
+        return None;
+    }
+    let mut used = vec![false; positions.len()];
+    for corners in faces {
+        for &i in corners.iter().filter(|&&i| (i as usize) < positions.len()) {
+            used[i as usize] = true;
+        }
+    }
+    for vertex in (0..positions.len()).filter(|&v| !used[v]) {
+        findings.errors.push(MeshError::IsolatedVertex { vertex });
+    }
+    if findings.stop() {
+        return None;
+    }
+    let errors_before_topology = findings.errors.len();
+
+    let valid_faces = || faces.iter().enumerate().filter(|(f, _)| index_ok[*f]);
+    let table = EdgeTable::new(valid_faces());
+    findings.errors.extend(table.non_manifold_edges());
+    findings.errors.extend(table.non_manifold_vertices(faces.len()));
+    findings.errors.extend(table.orientation_conflicts());
+    let manifold_and_oriented = findings.errors.len() == errors_before_topology;
+    if findings.stop() {
+        return None;
+    }
+    let components = topology::component_representatives(positions.len(), valid_faces().map(|(_, c)| c));
+    if components.len() > 1 {
+        findings.errors.push(MeshError::MultipleComponents {
+            count: components.len(),
+            vertex: components[1],
+        });
+    }
+    let all_faces_valid = index_ok.iter().all(|&ok| ok);
+    if findings.stop() || !manifold_and_oriented || !all_faces_valid || components.len() > 1 {
+        return None;
+    }
+    let boundary_edges = table.boundary_edges();
+    let boundary_loops = topology::trace_boundary_loops(positions.len(), &boundary_edges);
+    let used_count = used.iter().filter(|&&u| u).count();
+    if let Err(error) =
+        topology::disk_check(used_count, table.edge_count(), faces.len(), boundary_loops.len())
+    {
+        findings.errors.push(error);
+    }
+    if !findings.errors.is_empty() {
+        return None;
+    }
+    Some(ValidTopology { edges: table.edges(), boundary_edges, boundary_loops })
+}
+
+/// Index range and repetition checks; returns which faces have valid, distinct indices.
+fn check_indices(vertex_count: usize, faces: &[[u32; 3]], errors: &mut Vec<MeshError>) -> Vec<bool> {
+    let mut repeats = Vec::new();
+    let mut index_ok = vec![true; faces.len()];
+    for (face, corners) in faces.iter().enumerate() {
+        for (corner, &index) in corners.iter().enumerate() {
+            if index as usize >= vertex_count {
+                errors.push(MeshError::IndexOutOfRange {
+                    face,
+                    corner,
+                    index: u64::from(index),
+                    vertex_count,
+                });
+                index_ok[face] = false;
+            }
+        }
+        let repeated = (0..3).find(|&c| corners[c] == corners[(c + 1) % 3]).map(|c| corners[c]);
+        if let Some(index) = repeated {
+            repeats.push(MeshError::RepeatedIndex { face, index });
+            index_ok[face] = false;
+        }
+    }
+    errors.extend(repeats);
+    index_ok
+}
