@@ -1,1 +1,1 @@
-//! placeholder
+pub mod hessian_energy;
