@@ -1,1 +1,23 @@
+//! Scalar fields on a mesh whose level sets form a chosen curve family: pseudo-geodesics,
+//! geodesics or asymptotic curves (paper Sec. 3.1–3.2.2).
+
+mod asymptotic;
+mod crossing;
+mod darboux;
+mod error;
+mod field_solver;
+mod geodesic;
+mod gradient_norm;
 pub mod hessian_energy;
+mod params;
+mod problem;
+mod pseudo_geodesic;
+mod report;
+mod star_chords;
+
+pub use crossing::{find_level_crossing, EdgeCrossing, LevelCrossing};
+pub use darboux::{level_frame, LevelFrame};
+pub use error::FieldError;
+pub use field_solver::FieldSolver;
+pub use params::{Family, FieldParams, Stage, Weights};
+pub use report::{Energies, StepReport};

@@ -2,7 +2,7 @@
 
 /// Options of [`super::LevenbergMarquardt`]. All fields are public; [`Default`] gives the values
 /// documented on each field.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct LmOptions {
     /// Initial damping μ₀ = tau · max diag(JᵀJ). Default 1e-3 (MNT; use 1e-6 when the start is
     /// believed to be good, up to 1 when it is poor).

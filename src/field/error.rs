@@ -1,0 +1,42 @@
+//! Errors of the field optimisation.
+
+use crate::solver::SolverError;
+use std::fmt;
+
+/// Why a field optimisation could not start or continue.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum FieldError {
+    /// The initial field does not have one value per mesh vertex.
+    FieldLength { expected: usize, actual: usize },
+    /// A field value is NaN or infinite.
+    NonFiniteValue { vertex: usize },
+    /// The field is constant (or its gradient vanishes everywhere): it has no level curves.
+    ConstantField,
+    /// A parameter is out of range; `name` is the parameter, `message` says what is allowed.
+    InvalidParameter { name: &'static str, message: String },
+    /// The least-squares solver failed.
+    Solver(SolverError),
+}
+
+impl fmt::Display for FieldError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            FieldError::FieldLength { expected, actual } => {
+                write!(f, "the field has {actual} values but the mesh has {expected} vertices")
+            }
+            FieldError::NonFiniteValue { vertex } => write!(f, "field value at vertex {vertex} is not finite"),
+            FieldError::ConstantField => write!(f, "the field is constant: it has no level curves"),
+            FieldError::InvalidParameter { name, message } => write!(f, "parameter `{name}`: {message}"),
+            FieldError::Solver(e) => write!(f, "solver: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for FieldError {}
+
+impl From<SolverError> for FieldError {
+    fn from(e: SolverError) -> Self {
+        FieldError::Solver(e)
+    }
+}

@@ -1,0 +1,278 @@
+//! The stepwise field optimiser (Sec. 3.2.2): create it, `step` it a few iterations at a
+//! time, read the field and the binormals in between, change the weights, continue.
+
+use super::darboux::level_frame;
+use super::error::FieldError;
+use super::gradient_norm::mean_gradient_norm;
+use super::params::{Family, FieldParams, Weights};
+use super::problem::FieldProblem;
+use super::report::StepReport;
+use crate::mesh::{TriMesh, Vec3};
+use crate::solver::LevenbergMarquardt;
+
+/// Optimises a scalar field so that its level sets form the requested curve family.
+///
+/// The optimisation runs on a copy of the mesh scaled to mean edge length 1, with the field
+/// scaled to mean `‖∇F‖` 1 (Sec. 3.2.2), so the default weights suit any input; every value
+/// handed back is in the caller's units.
+pub struct FieldSolver {
+    problem: FieldProblem,
+    lm: LevenbergMarquardt,
+    params: FieldParams,
+    /// Variables of the normalised problem: field, then auxiliaries.
+    x: Vec<f64>,
+    /// Internal field = caller field × `field_scale`.
+    field_scale: f64,
+    stage: usize,
+    stage_iterations: usize,
+    iterations: usize,
+    converged: bool,
+    last_report: StepReport,
+}
+
+impl FieldSolver {
+    /// Prepares the optimisation of `initial_field` (one value per vertex) on `mesh`.
+    pub fn new(mesh: &TriMesh, initial_field: &[f64], params: FieldParams) -> Result<FieldSolver, FieldError> {
+        validate_params(&params)?;
+        validate_field(mesh, initial_field)?;
+        let (unit_mesh, length_scale) = mesh.unit_scaled();
+        let gradient = mean_gradient_norm(&unit_mesh, initial_field);
+        if !(gradient > 0.0 && gradient.is_finite()) {
+            return Err(FieldError::ConstantField);
+        }
+        let field_scale = 1.0 / gradient;
+        let gradient_target = params.gradient_target.map_or(1.0, |r| r * field_scale / length_scale);
+        let (stage, weights) = stage_weights(&params, 0);
+        let problem = FieldProblem::new(unit_mesh, params.family, weights, gradient_target);
+        let lm = LevenbergMarquardt::new(&problem, params.lm.clone())?;
+        let mut x: Vec<f64> = initial_field.iter().map(|f| f * field_scale).collect();
+        x.resize(crate::solver::LeastSquaresProblem::variable_count(&problem), 0.0);
+        let mut solver = FieldSolver {
+            problem,
+            lm,
+            params,
+            x,
+            field_scale,
+            stage,
+            stage_iterations: 0,
+            iterations: 0,
+            converged: false,
+            last_report: StepReport::default(),
+        };
+        solver.initialize_auxiliaries();
+        solver.last_report = solver.measure(0, 0);
+        Ok(solver)
+    }
+
+    /// Runs at most `max_iterations` Levenberg–Marquardt iterations and reports the state.
+    pub fn step(&mut self, max_iterations: usize) -> Result<StepReport, FieldError> {
+        let mut flips = 0;
+        let mut ran = 0;
+        while ran < max_iterations && !self.converged {
+            flips += self.reorient_side_vectors();
+            let outcome = self.lm.iterate(&self.problem, &mut self.x)?;
+            ran += 1;
+            self.iterations += 1;
+            self.stage_iterations += 1;
+            let decrease = outcome.energy_before - outcome.energy_after;
+            let settled = outcome.converged.is_some()
+                || !outcome.accepted
+                || decrease <= self.params.relative_tolerance * outcome.energy_before;
+            let final_stage = self.stage == self.params.schedule.len();
+            if final_stage {
+                self.converged = settled;
+            } else if settled || self.stage_iterations >= self.params.schedule[self.stage].iterations {
+                self.enter_stage(self.stage + 1);
+            }
+        }
+        self.last_report = self.measure(ran, flips);
+        Ok(self.last_report.clone())
+    }
+
+    /// The report of the last `step` (or of the initial state).
+    pub fn report(&self) -> &StepReport {
+        &self.last_report
+    }
+
+    /// The current field, one value per vertex, in the scale of the initial field.
+    pub fn field(&self) -> Vec<f64> {
+        self.x[..self.vertex_count()].iter().map(|f| f / self.field_scale).collect()
+    }
+
+    /// Unit binormal per vertex: the auxiliary `b` for pseudo-geodesics, the discrete
+    /// binormal of the level polyline otherwise; zero at boundary and singular vertices
+    /// and where the level polyline is straight.
+    pub fn binormals(&self) -> Vec<Vec3> {
+        self.per_interior_vertex(|solver, k, v| match solver.problem.family() {
+            Family::PseudoGeodesic { .. } => solver.auxiliary(k, 0).try_normalize(0.0),
+            Family::Geodesic | Family::Asymptotic => level_frame(solver.problem.mesh(), solver.internal_field(), v)?.binormal,
+        })
+    }
+
+    /// Unit side vector `u` of the Darboux frame per vertex (Eq. 10); zero at boundary and singular vertices.
+    pub fn side_vectors(&self) -> Vec<Vec3> {
+        self.per_interior_vertex(|solver, k, v| match solver.problem.family() {
+            Family::PseudoGeodesic { .. } => solver.auxiliary(k, 3).try_normalize(0.0),
+            Family::Geodesic | Family::Asymptotic => Some(level_frame(solver.problem.mesh(), solver.internal_field(), v)?.side),
+        })
+    }
+
+    /// Replaces the remaining schedule by constant `weights` held until convergence.
+    pub fn set_weights(&mut self, weights: Weights) -> Result<(), FieldError> {
+        validate_weights(&weights)?;
+        self.params.schedule.clear();
+        self.params.weights = weights;
+        self.enter_stage(0);
+        Ok(())
+    }
+
+    pub fn params(&self) -> &FieldParams {
+        &self.params
+    }
+
+    pub fn iterations(&self) -> usize {
+        self.iterations
+    }
+
+    pub fn is_converged(&self) -> bool {
+        self.converged
+    }
+
+    fn vertex_count(&self) -> usize {
+        self.problem.mesh().vertex_count()
+    }
+
+    fn internal_field(&self) -> &[f64] {
+        &self.x[..self.vertex_count()]
+    }
+
+    fn auxiliary(&self, k: usize, offset: usize) -> Vec3 {
+        let start = self.problem.auxiliary_start(k) + offset;
+        Vec3::new(self.x[start], self.x[start + 1], self.x[start + 2])
+    }
+
+    fn set_auxiliary(&mut self, k: usize, offset: usize, value: &Vec3) {
+        let start = self.problem.auxiliary_start(k) + offset;
+        self.x[start..start + 3].copy_from_slice(value.as_slice());
+    }
+
+    fn per_interior_vertex(&self, value: impl Fn(&Self, usize, usize) -> Option<Vec3>) -> Vec<Vec3> {
+        let mut out = vec![Vec3::zeros(); self.vertex_count()];
+        for (k, &v) in self.problem.interior().iter().enumerate() {
+            if level_frame(self.problem.mesh(), self.internal_field(), v as usize).is_some() {
+                out[v as usize] = value(self, k, v as usize).unwrap_or_else(Vec3::zeros);
+            }
+        }
+        out
+    }
+
+    fn enter_stage(&mut self, stage: usize) {
+        let (stage, weights) = stage_weights(&self.params, stage);
+        self.stage = stage;
+        self.stage_iterations = 0;
+        self.converged = false;
+        self.problem.set_weights(weights);
+        self.lm.reset_damping();
+    }
+
+    /// Starts `b` at the discrete binormal of the level polyline (or at `cos θ n + sin θ u`
+    /// where it is straight) and `u` at `n × t` (Sec. 3.2.2).
+    fn initialize_auxiliaries(&mut self) {
+        let Family::PseudoGeodesic { theta_degrees } = self.problem.family() else { return };
+        let (sin, cos) = theta_degrees.to_radians().sin_cos();
+        for k in 0..self.problem.interior().len() {
+            let v = self.problem.interior()[k] as usize;
+            let normal = self.problem.mesh().vertex_normals()[v];
+            let (b, u) = match level_frame(self.problem.mesh(), self.internal_field(), v) {
+                Some(frame) => (frame.binormal.unwrap_or(normal * cos + frame.side * sin), frame.side),
+                None => (normal, any_tangent(&normal)),
+            };
+            self.set_auxiliary(k, 0, &b);
+            self.set_auxiliary(k, 3, &u);
+        }
+    }
+
+    /// The orientation test of Sec. 3.2.2: where `det(q − p, u, n) ≤ 0`, re-initialise
+    /// `u = n × (q − p)` normalised. Returns how many side vectors were flipped.
+    fn reorient_side_vectors(&mut self) -> usize {
+        if !matches!(self.problem.family(), Family::PseudoGeodesic { .. }) {
+            return 0;
+        }
+        let mut flips = 0;
+        for k in 0..self.problem.interior().len() {
+            let v = self.problem.interior()[k] as usize;
+            let Some(frame) = level_frame(self.problem.mesh(), self.internal_field(), v) else { continue };
+            if self.auxiliary(k, 3).dot(&frame.side) <= 0.0 {
+                self.set_auxiliary(k, 3, &frame.side);
+                flips += 1;
+            }
+        }
+        flips
+    }
+
+    fn measure(&self, iterations_this_step: usize, flips: usize) -> StepReport {
+        StepReport {
+            iterations: self.iterations,
+            iterations_this_step,
+            stage: self.stage,
+            flips,
+            damping: self.lm.damping(),
+            converged: self.converged,
+            ..StepReport::measure(&self.problem, &self.x)
+        }
+    }
+}
+
+fn stage_weights(params: &FieldParams, stage: usize) -> (usize, Weights) {
+    match params.schedule.get(stage) {
+        Some(s) => (stage, s.weights),
+        None => (params.schedule.len(), params.weights),
+    }
+}
+
+fn any_tangent(normal: &Vec3) -> Vec3 {
+    let helper = if normal.x.abs() < 0.9 { Vec3::x() } else { Vec3::y() };
+    normal.cross(&helper).normalize()
+}
+
+fn validate_field(mesh: &TriMesh, field: &[f64]) -> Result<(), FieldError> {
+    if field.len() != mesh.vertex_count() {
+        return Err(FieldError::FieldLength { expected: mesh.vertex_count(), actual: field.len() });
+    }
+    if let Some(vertex) = field.iter().position(|f| !f.is_finite()) {
+        return Err(FieldError::NonFiniteValue { vertex });
+    }
+    Ok(())
+}
+
+fn validate_weights(w: &Weights) -> Result<(), FieldError> {
+    for (name, value) in [("weights.fair", w.fair), ("weights.grad", w.grad), ("weights.angle", w.angle)] {
+        if !(value.is_finite() && value >= 0.0) {
+            return Err(FieldError::InvalidParameter { name, message: format!("must be finite and ≥ 0, got {value}") });
+        }
+    }
+    Ok(())
+}
+
+fn validate_params(params: &FieldParams) -> Result<(), FieldError> {
+    let theta = params.family.theta_degrees();
+    if !(theta.is_finite() && (0.0..=180.0).contains(&theta)) {
+        return Err(FieldError::InvalidParameter { name: "theta", message: format!("must lie in [0°, 180°], got {theta}") });
+    }
+    validate_weights(&params.weights)?;
+    for stage in &params.schedule {
+        validate_weights(&stage.weights)?;
+        if stage.iterations == 0 {
+            return Err(FieldError::InvalidParameter { name: "schedule", message: "every stage needs at least one iteration".into() });
+        }
+    }
+    if let Some(r) = params.gradient_target {
+        if !(r.is_finite() && r > 0.0) {
+            return Err(FieldError::InvalidParameter { name: "gradient_target", message: format!("must be finite and > 0, got {r}") });
+        }
+    }
+    if !(params.relative_tolerance.is_finite() && params.relative_tolerance >= 0.0) {
+        return Err(FieldError::InvalidParameter { name: "relative_tolerance", message: "must be finite and ≥ 0".into() });
+    }
+    Ok(())
+}

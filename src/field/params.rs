@@ -1,0 +1,85 @@
+//! What a field optimisation aims at (the curve family) and how hard it pulls on each
+//! energy term of Eq. 12, possibly changing the weights in stages (Fig. 15).
+
+use crate::solver::LmOptions;
+use serde::{Deserialize, Serialize};
+
+/// The family of curves the level sets should form.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Family {
+    /// Pseudo-geodesics: the binormal keeps the signed angle `theta_degrees` to the surface
+    /// normal (`E_angle`, Eq. 8–10). `θ` and `180° − θ` are the two mirror families.
+    PseudoGeodesic { theta_degrees: f64 },
+    /// Geodesics, θ = 90° (`E_geo`, Eq. 13).
+    Geodesic,
+    /// Asymptotic curves, θ = 0° (`E_asy`, Eq. 13).
+    Asymptotic,
+}
+
+impl Family {
+    /// Target angle between binormal and normal in degrees.
+    pub fn theta_degrees(&self) -> f64 {
+        match *self {
+            Family::PseudoGeodesic { theta_degrees } => theta_degrees,
+            Family::Geodesic => 90.0,
+            Family::Asymptotic => 0.0,
+        }
+    }
+}
+
+/// The weights λ of Eq. 12. `angle` weighs whichever curve term the family uses
+/// (`E_angle`, `E_geo` or `E_asy`).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Weights {
+    pub fair: f64,
+    pub grad: f64,
+    pub angle: f64,
+}
+
+/// Weights held for a number of iterations.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Stage {
+    pub iterations: usize,
+    pub weights: Weights,
+}
+
+/// Parameters of a field optimisation.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct FieldParams {
+    pub family: Family,
+    /// Warm-up stages (Fig. 15: small λ_angle and larger λ_grad first), run in order before `weights`.
+    pub schedule: Vec<Stage>,
+    /// The final weights, held until convergence.
+    pub weights: Weights,
+    /// Target `‖∇F‖` of `E_grad` in field units per caller length unit (strip spacing ≈ 1/r).
+    /// `None` keeps the area-weighted mean gradient norm of the initial field.
+    pub gradient_target: Option<f64>,
+    /// The final stage has converged when an iteration lowers the weighted energy `E_pg` by
+    /// less than this fraction (or Levenberg–Marquardt meets one of its own stopping rules).
+    /// Past that point the regularisers only drift the family slowly.
+    pub relative_tolerance: f64,
+    /// Levenberg–Marquardt settings.
+    pub lm: LmOptions,
+}
+
+impl FieldParams {
+    /// Defaults for a family: the weights of the paper's Table 2 (λ_fair 1e-3, λ_grad 1e-4,
+    /// λ_angle 30) reached through a short continuation from a small λ_angle (Fig. 15), on
+    /// the normalised problem (mean edge 1, mean `‖∇F‖` 1).
+    pub fn new(family: Family) -> Self {
+        let stage = |iterations, fair, grad, angle| Stage { iterations, weights: Weights { fair, grad, angle } };
+        FieldParams {
+            family,
+            schedule: vec![stage(8, 1e-3, 1e-2, 1e-2), stage(8, 1e-3, 1e-3, 1.0)],
+            weights: Weights { fair: 1e-3, grad: 1e-4, angle: 30.0 },
+            gradient_target: None,
+            relative_tolerance: 1e-5,
+            lm: LmOptions::default(),
+        }
+    }
+
+    /// Pseudo-geodesic defaults for a target angle in degrees.
+    pub fn pseudo_geodesic(theta_degrees: f64) -> Self {
+        Self::new(Family::PseudoGeodesic { theta_degrees })
+    }
+}

@@ -1,0 +1,101 @@
+//! `E_angle`, the pseudo-geodesic angle energy of Eq. 8, with the auxiliary unit binormal
+//! `b` (Eq. 9) and side vector `u` (Eq. 10) of each interior vertex.
+//!
+//! Rows per regular vertex, all scaled by `√(λ_angle · A_v)` (A normalised to mean 1):
+//!
+//! | row | residual | equation |
+//! |---|---|---|
+//! | 0 | `(b·n)² − cos²θ` | Eq. 8, first term |
+//! | 1 | `(b·n)(b·u) − sinθ cosθ` | Eq. 8, second term: the *signed* angle, telling the two osculating planes of Fig. 8 apart |
+//! | 2, 3 | `b·ê_p`, `b·ê_q` with `ê = e/‖e‖`, `e_p = v0 − p`, `e_q = v0 − q` | Eq. 9 |
+//! | 4 | `b·b − 1` | Eq. 9 |
+//! | 5 | `u·t̂` with `t̂ = (q − p)/‖q − p‖` | Eq. 10 |
+//! | 6, 7 | `u·n`, `u·u − 1` | Eq. 10 |
+//!
+//! Rows 2, 3 and 5 use normalised chords with their exact derivatives (no frozen norms).
+//! Singular vertices (see [`super::crossing`]) get zero rows.
+
+use super::crossing::find_level_crossing;
+use super::star_chords::StarChords;
+use crate::mesh::{TriMesh, Vec3};
+
+/// Residual rows per interior vertex.
+pub(crate) const ROWS: usize = 8;
+/// Auxiliary variables per interior vertex: `b` then `u`.
+pub(crate) const AUXILIARIES: usize = 6;
+
+/// `cos θ` and `sin θ` of the target angle between binormal and surface normal.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct TargetAngle {
+    pub cos: f64,
+    pub sin: f64,
+}
+
+impl TargetAngle {
+    pub fn from_degrees(theta: f64) -> Self {
+        let r = theta.to_radians();
+        TargetAngle { cos: r.cos(), sin: r.sin() }
+    }
+}
+
+/// Evaluates the rows of vertex `v`. `aux = [b, u]`; `jacobian` (if any) is row-major with
+/// `columns` columns: field columns `0..=ring` (centre first, then the ring), auxiliaries from `aux_column`.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn evaluate(
+    mesh: &TriMesh,
+    field: &[f64],
+    v: usize,
+    aux: &[f64],
+    target: TargetAngle,
+    scale: f64,
+    residuals: &mut [f64],
+    jacobian: Option<&mut [f64]>,
+    aux_column: usize,
+) {
+    residuals.fill(0.0);
+    let columns = aux_column + AUXILIARIES;
+    let jacobian = jacobian.map(|j| {
+        j.fill(0.0);
+        j
+    });
+    let Some(chords) = find_level_crossing(mesh, field, v).and_then(|c| StarChords::new(mesh, field, v, &c)) else {
+        return;
+    };
+    let n = mesh.vertex_normals()[v];
+    let b = Vec3::new(aux[0], aux[1], aux[2]);
+    let u = Vec3::new(aux[3], aux[4], aux[5]);
+    let (bn, bu) = (b.dot(&n), b.dot(&u));
+    let (ep, eq, t) = (chords.to_p.unit(), chords.to_q.unit(), chords.tangent.unit());
+    let values = [
+        bn * bn - target.cos * target.cos,
+        bn * bu - target.sin * target.cos,
+        b.dot(&ep),
+        b.dot(&eq),
+        b.dot(&b) - 1.0,
+        u.dot(&t),
+        u.dot(&n),
+        u.dot(&u) - 1.0,
+    ];
+    for (r, value) in residuals.iter_mut().zip(values) {
+        *r = scale * value;
+    }
+    let Some(jac) = jacobian else { return };
+    let (bc, uc) = (aux_column, aux_column + 3);
+    let mut set = |row: usize, col: usize, d: Vec3| {
+        for k in 0..3 {
+            jac[row * columns + col + k] += scale * d[k];
+        }
+    };
+    set(0, bc, n * (2.0 * bn));
+    set(1, bc, n * bu + u * bn);
+    set(1, uc, b * bn);
+    set(2, bc, ep);
+    set(3, bc, eq);
+    set(4, bc, b * 2.0);
+    set(5, uc, t);
+    set(6, uc, n);
+    set(7, uc, u * 2.0);
+    chords.to_p.add_normalized_dot_partials(&b, scale, &mut jac[2 * columns..3 * columns]);
+    chords.to_q.add_normalized_dot_partials(&b, scale, &mut jac[3 * columns..4 * columns]);
+    chords.tangent.add_normalized_dot_partials(&u, scale, &mut jac[5 * columns..6 * columns]);
+}

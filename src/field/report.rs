@@ -1,0 +1,112 @@
+//! What a field optimisation reports after each call to `step`.
+
+use super::darboux::level_frame;
+use super::params::{Family, Weights};
+use super::problem::{Block, FieldProblem};
+use crate::solver::LeastSquaresProblem;
+use serde::{Deserialize, Serialize};
+
+/// The unweighted energy terms of Eq. 12 on the normalised problem (mean edge length 1,
+/// initial mean `‖∇F‖` 1), and the weighted total the solver minimises.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Energies {
+    /// `E_fair`, Eq. 6.
+    pub fair: f64,
+    /// `E_grad`, Eq. 11 (residual `‖∇F‖² − r²`).
+    pub grad: f64,
+    /// The curve term: `E_angle` of Eq. 8 for pseudo-geodesics, `E_geo` or `E_asy` of Eq. 13.
+    pub angle: f64,
+    /// The auxiliary-variable constraints Eq. 9–10 (pseudo-geodesics only; 0 otherwise).
+    pub frame: f64,
+    /// `λ_fair E_fair + λ_grad E_grad + λ_angle (E_angle + constraints)` with the weights in force.
+    pub total: f64,
+}
+
+/// State of a field optimisation after a `step`.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct StepReport {
+    /// Iterations run since the solver was created.
+    pub iterations: usize,
+    /// Iterations run by this call.
+    pub iterations_this_step: usize,
+    /// Index of the weight stage in force (`schedule.len()` for the final weights).
+    pub stage: usize,
+    pub energies: Energies,
+    /// RMS and maximum of `|θ_measured − θ|` in degrees over regular interior vertices
+    /// with a defined binormal, measured from the field's own level polylines.
+    pub angle_error_rms_degrees: f64,
+    pub angle_error_max_degrees: f64,
+    /// Interior vertices where the angle was measured.
+    pub measured_vertices: usize,
+    /// Interior vertices whose level curve does not cross exactly two star edges.
+    pub singular_vertices: Vec<u32>,
+    /// Side vectors re-oriented by the `det(q − p, u, n) > 0` test during this call.
+    pub flips: usize,
+    /// Levenberg–Marquardt damping μ after the last iteration.
+    pub damping: f64,
+    /// The final stage has converged; further steps do nothing.
+    pub converged: bool,
+}
+
+impl StepReport {
+    /// Measures energies, angle errors and singular vertices of `x` (variables of `problem`).
+    pub(crate) fn measure(problem: &FieldProblem, x: &[f64]) -> StepReport {
+        let mut report = StepReport { energies: energies(problem, x), ..StepReport::default() };
+        let mesh = problem.mesh();
+        let field = &x[..mesh.vertex_count()];
+        let theta = problem.family().theta_degrees();
+        let mut sum_squares = 0.0;
+        for &v in problem.interior() {
+            match level_frame(mesh, field, v as usize) {
+                None => report.singular_vertices.push(v),
+                Some(frame) => {
+                    if let Some(measured) = frame.signed_angle_degrees() {
+                        let error = angle_error(problem.family(), measured, theta);
+                        sum_squares += error * error;
+                        report.angle_error_max_degrees = report.angle_error_max_degrees.max(error);
+                        report.measured_vertices += 1;
+                    }
+                }
+            }
+        }
+        if report.measured_vertices > 0 {
+            report.angle_error_rms_degrees = (sum_squares / report.measured_vertices as f64).sqrt();
+        }
+        report
+    }
+}
+
+/// Angle error of a measured signed angle. Geodesics and asymptotic curves have no sign:
+/// there `θ` and `180° − θ` are the same family.
+fn angle_error(family: Family, measured: f64, theta: f64) -> f64 {
+    let error = (measured - theta).abs();
+    match family {
+        Family::PseudoGeodesic { .. } => error,
+        Family::Geodesic | Family::Asymptotic => error.min((180.0 - measured - theta).abs()),
+    }
+}
+
+fn energies(problem: &FieldProblem, x: &[f64]) -> Energies {
+    let unit = Weights { fair: 1.0, grad: 1.0, angle: 1.0 };
+    let w = problem.weights();
+    let mut e = Energies::default();
+    let mut residuals = Vec::new();
+    for b in 0..problem.block_count() {
+        residuals.resize(problem.block_residual_count(b), 0.0);
+        problem.evaluate_weighted(b, &unit, x, &mut residuals, None);
+        let squares = |r: &[f64]| r.iter().map(|v| v * v).sum::<f64>();
+        match problem.block(b) {
+            Block::Fair(_) => e.fair += squares(&residuals),
+            Block::Grad(_) => e.grad += squares(&residuals),
+            Block::Curve(_) => match problem.family() {
+                Family::PseudoGeodesic { .. } => {
+                    e.angle += squares(&residuals[..2]);
+                    e.frame += squares(&residuals[2..]);
+                }
+                Family::Geodesic | Family::Asymptotic => e.angle += squares(&residuals),
+            },
+        }
+    }
+    e.total = w.fair * e.fair + w.grad * e.grad + w.angle * (e.angle + e.frame);
+    e
+}
