@@ -130,10 +130,10 @@ fn gradient_of_a_linear_function_is_its_tangential_part() {
             assert!((grad - expected).norm() < 1e-12, "face {f}: {grad} vs {expected}");
             assert!((g[0] + g[1] + g[2]).norm() < 1e-12);
             // Hat function i is 1 at corner i and 0 at the others.
-            for i in 0..3 {
-                let p = |k: usize| m.positions()[m.faces()[f][k] as usize];
-                assert!(g[i].dot(&(p((i + 1) % 3) - p((i + 2) % 3))).abs() < 1e-12);
-                assert!(close(g[i].dot(&(p(i) - p((i + 1) % 3))), 1.0, 1e-12));
+            let p = |k: usize| m.positions()[m.faces()[f][k] as usize];
+            for (i, gi) in g.iter().enumerate() {
+                assert!(gi.dot(&(p((i + 1) % 3) - p((i + 2) % 3))).abs() < 1e-12);
+                assert!(close(gi.dot(&(p(i) - p((i + 1) % 3))), 1.0, 1e-12));
             }
         }
     }

@@ -224,7 +224,7 @@ fn check_order_and_full_diagnosis() {
     for e in &expected {
         assert!(all.contains(e), "missing {e:?} in {all:?}");
     }
-    let position = |pred: &dyn Fn(&MeshError) -> bool| all.iter().position(|e| pred(e)).unwrap();
+    let position = |pred: &dyn Fn(&MeshError) -> bool| all.iter().position(pred).unwrap();
     assert!(position(&|e| matches!(e, MeshError::IsolatedVertex { .. }))
         < position(&|e| matches!(e, MeshError::NonManifoldVertex { vertex: 0, .. })));
     assert_eq!(all[0], expected[0]);

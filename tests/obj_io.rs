@@ -46,7 +46,7 @@ fn polygons_are_fan_triangulated_in_order() {
 #[test]
 fn write_then_parse_is_bit_identical() {
     let mut rng = Lcg(3);
-    let awkward = [0.1 + 0.2, 1.0 / 3.0, std::f64::consts::PI, 1e-300, -0.0, 123456789.123456789, 5e-324];
+    let awkward = [0.1 + 0.2, 1.0 / 3.0, std::f64::consts::PI, 1e-300, -0.0, 123_456_789.123_456_79, 5e-324];
     let soup = mapped(grid(5, 4, 0.7), |p| {
         Vec3::new(p.x + 0.1 * rng.unit(), p.y * (1.0 + 1e-9), awkward[(rng.next_u64() % 7) as usize] * 1e-3)
     });

@@ -76,7 +76,8 @@ impl Triangle {
         let [u, v, w] = edges.map(|e| e / scale);
         let longest_sq = u.norm_squared().max(v.norm_squared()).max(w.norm_squared());
         let twice_area = u.cross(&(-w)).norm();
-        !(twice_area > ZERO_AREA_RELATIVE * longest_sq)
+        let threshold = ZERO_AREA_RELATIVE * longest_sq;
+        twice_area.is_nan() || threshold.is_nan() || twice_area <= threshold
     }
 }
 

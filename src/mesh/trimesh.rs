@@ -129,11 +129,14 @@ impl TriMesh {
                 && weight.is_finite()
                 && self.vertex_normals[v].iter().all(|c| c.is_finite())
         };
-        let edges_ok = self.mean_edge_length > 0.0 && self.mean_edge_length.is_finite();
-        match (0..self.positions.len()).find(|&v| !vertex_ok(v) || !edges_ok) {
-            Some(v) => Err(MeshError::GeometryOutOfRange { face: self.star(v).faces[0] as usize }),
-            None => Ok(()),
+        if let Some(v) = (0..self.positions.len()).find(|&v| !vertex_ok(v)) {
+            // Internal invariant: no vertex is isolated, so every star has a face.
+            return Err(MeshError::GeometryOutOfRange { face: self.star(v).faces[0] as usize });
         }
+        if !(self.mean_edge_length > 0.0 && self.mean_edge_length.is_finite()) {
+            return Err(MeshError::GeometryOutOfRange { face: 0 });
+        }
+        Ok(())
     }
 
     pub fn vertex_count(&self) -> usize {
