@@ -4,7 +4,7 @@
 use super::darboux::level_frame;
 use super::error::FieldError;
 use super::gradient_norm::mean_gradient_norm;
-use super::params::{Family, FieldParams, Weights};
+use super::params::{Family, FieldParams, Weights, SETTLING_ITERATIONS};
 use super::problem::FieldProblem;
 use super::report::StepReport;
 use crate::mesh::{TriMesh, Vec3};
@@ -25,6 +25,8 @@ pub struct FieldSolver {
     field_scale: f64,
     stage: usize,
     stage_iterations: usize,
+    /// Consecutive iterations of the current stage that lowered `E_pg` by less than the relative tolerance.
+    slow_iterations: usize,
     iterations: usize,
     converged: bool,
     last_report: StepReport,
@@ -55,6 +57,7 @@ impl FieldSolver {
             field_scale,
             stage,
             stage_iterations: 0,
+            slow_iterations: 0,
             iterations: 0,
             converged: false,
             last_report: StepReport::default(),
@@ -75,9 +78,12 @@ impl FieldSolver {
             self.iterations += 1;
             self.stage_iterations += 1;
             let decrease = outcome.energy_before - outcome.energy_after;
-            let settled = outcome.converged.is_some()
-                || !outcome.accepted
-                || decrease <= self.params.relative_tolerance * outcome.energy_before;
+            if decrease <= self.params.relative_tolerance * outcome.energy_before {
+                self.slow_iterations += 1;
+            } else {
+                self.slow_iterations = 0;
+            }
+            let settled = outcome.converged.is_some() || !outcome.accepted || self.slow_iterations >= SETTLING_ITERATIONS;
             let final_stage = self.stage == self.params.schedule.len();
             if final_stage {
                 self.converged = settled;
@@ -170,6 +176,7 @@ impl FieldSolver {
         let (stage, weights) = stage_weights(&self.params, stage);
         self.stage = stage;
         self.stage_iterations = 0;
+        self.slow_iterations = 0;
         self.converged = false;
         self.problem.set_weights(weights);
         self.lm.reset_damping();

@@ -19,5 +19,6 @@ pub use crossing::{find_level_crossing, EdgeCrossing, LevelCrossing};
 pub use darboux::{level_frame, LevelFrame};
 pub use error::FieldError;
 pub use field_solver::FieldSolver;
-pub use params::{Family, FieldParams, Stage, Weights};
+pub use problem::FieldProblem;
+pub use params::{Family, FieldParams, Stage, Weights, SETTLING_ITERATIONS};
 pub use report::{Energies, StepReport};

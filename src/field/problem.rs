@@ -27,7 +27,7 @@ pub(crate) enum Block {
 }
 
 /// The field problem on a unit-scaled mesh.
-pub(crate) struct FieldProblem {
+pub struct FieldProblem {
     mesh: TriMesh,
     fairness: HessianEnergy,
     family: Family,
@@ -42,6 +42,8 @@ pub(crate) struct FieldProblem {
 }
 
 impl FieldProblem {
+    /// The problem of Eq. 12 on `mesh` (meant to be unit-scaled: weights assume mean edge length 1),
+    /// with the target gradient norm `gradient_target` of `E_grad`.
     pub fn new(mesh: TriMesh, family: Family, weights: Weights, gradient_target: f64) -> Self {
         let fairness = HessianEnergy::new(&mesh);
         let interior: Vec<u32> = (0..mesh.vertex_count()).filter(|&v| !mesh.is_boundary_vertex(v)).map(|v| v as u32).collect();
@@ -83,6 +85,7 @@ impl FieldProblem {
         }
     }
 
+    /// The (unit-scaled) mesh the problem lives on.
     pub fn mesh(&self) -> &TriMesh {
         &self.mesh
     }
@@ -99,6 +102,7 @@ impl FieldProblem {
         self.weights = weights;
     }
 
+    /// Interior vertices, the owners of the curve blocks.
     pub fn interior(&self) -> &[u32] {
         &self.interior
     }
@@ -108,7 +112,7 @@ impl FieldProblem {
         self.mesh.vertex_count() + Self::auxiliaries_per_vertex(self.family) * k
     }
 
-    pub fn block(&self, b: usize) -> Block {
+    pub(crate) fn block(&self, b: usize) -> Block {
         let (n, m) = (self.mesh.vertex_count(), self.mesh.face_count());
         if b < n {
             Block::Fair(b)
@@ -120,7 +124,7 @@ impl FieldProblem {
     }
 
     /// Evaluates block `b` with the given weights (the solver uses the problem's own; reports use 1).
-    pub fn evaluate_weighted(&self, b: usize, weights: &Weights, x: &[f64], residuals: &mut [f64], jacobian: Option<&mut [f64]>) {
+    pub(crate) fn evaluate_weighted(&self, b: usize, weights: &Weights, x: &[f64], residuals: &mut [f64], jacobian: Option<&mut [f64]>) {
         match self.block(b) {
             Block::Fair(v) => {
                 let scale = weights.fair.sqrt();
