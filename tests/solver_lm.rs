@@ -191,3 +191,48 @@ fn zero_residual_reports_convergence_without_moving() {
     assert_eq!(outcome.trials, 0);
     assert_eq!(outcome.converged, Some(Convergence::SmallGradient));
 }
+
+/// r = x0 + x1 − 2: JᵀJ = [[1, 1], [1, 1]] is singular, so with μ = 1e-20 (below the rounding
+/// of 1 + μ) the sparse Cholesky fails until the damping has grown.
+struct RankDeficient;
+
+impl LeastSquaresProblem for RankDeficient {
+    fn variable_count(&self) -> usize {
+        2
+    }
+    fn block_count(&self) -> usize {
+        1
+    }
+    fn block_variables(&self, _b: usize) -> &[u32] {
+        &[0, 1]
+    }
+    fn block_residual_count(&self, _b: usize) -> usize {
+        1
+    }
+    fn evaluate_block(&self, _b: usize, x: &[f64], r: &mut [f64], jacobian: Option<&mut [f64]>) {
+        r[0] = x[0] + x[1] - 2.0;
+        if let Some(j) = jacobian {
+            j.copy_from_slice(&[1.0, 1.0]);
+        }
+    }
+}
+
+#[test]
+fn failed_factorisation_is_a_rejected_trial_with_more_damping() {
+    let options = LmOptions { tau: 0.0, min_damping: 1e-20, ..LmOptions::default() };
+    let mut solver = LevenbergMarquardt::new(&RankDeficient, options.clone()).unwrap();
+    let mut x = [0.0, 0.0];
+    let outcome = solver.iterate(&RankDeficient, &mut x).unwrap();
+    assert!(outcome.trials > 1 && outcome.accepted, "{outcome:?}");
+    assert!(outcome.energy_after < 1e-6 * outcome.energy_before);
+    // The damping had to grow past the rounding of 1 + μ before a factorisation succeeded.
+    assert!(outcome.damping > 1e-18, "{outcome:?}");
+    assert!((x[0] + x[1] - 2.0).abs() < 1e-6, "{x:?}");
+
+    let single = LmOptions { max_trials: 1, ..options };
+    let mut solver = LevenbergMarquardt::new(&RankDeficient, single).unwrap();
+    let mut x = [0.0, 0.0];
+    let e = solver.iterate(&RankDeficient, &mut x).unwrap_err();
+    assert_eq!(e, lamella::solver::SolverError::FactorizationFailed { trials: 1 });
+    assert_eq!(x, [0.0, 0.0]);
+}
