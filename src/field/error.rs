@@ -15,6 +15,10 @@ pub enum FieldError {
     ConstantField,
     /// A parameter is out of range; `name` is the parameter, `message` says what is allowed.
     InvalidParameter { name: &'static str, message: String },
+    /// Saved session bytes are truncated, corrupted or inconsistent; `message` says where.
+    CorruptData { message: String },
+    /// Saved session bytes come from a newer (or unknown) format version.
+    UnsupportedVersion { found: u32, supported: u32 },
     /// The least-squares solver failed.
     Solver(SolverError),
 }
@@ -28,6 +32,10 @@ impl fmt::Display for FieldError {
             FieldError::NonFiniteValue { vertex } => write!(f, "field value at vertex {vertex} is not finite"),
             FieldError::ConstantField => write!(f, "the field is constant: it has no level curves"),
             FieldError::InvalidParameter { name, message } => write!(f, "parameter `{name}`: {message}"),
+            FieldError::CorruptData { message } => write!(f, "corrupt field session: {message}"),
+            FieldError::UnsupportedVersion { found, supported } => {
+                write!(f, "field session format version {found} is not supported (this library reads version {supported})")
+            }
             FieldError::Solver(e) => write!(f, "solver: {e}"),
         }
     }

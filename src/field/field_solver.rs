@@ -8,7 +8,16 @@ use super::params::{Family, FieldParams, Weights, SETTLING_ITERATIONS};
 use super::problem::FieldProblem;
 use super::report::StepReport;
 use crate::mesh::{TriMesh, Vec3};
-use crate::solver::LevenbergMarquardt;
+use crate::solver::{LeastSquaresProblem, LevenbergMarquardt};
+
+/// The factors between the caller's units and the normalised problem.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub(crate) struct Scales {
+    /// Internal field = caller field × `field`.
+    pub field: f64,
+    /// Internal lengths = caller lengths × `length`.
+    pub length: f64,
+}
 
 /// Optimises a scalar field so that its level sets form the requested curve family.
 ///
@@ -16,20 +25,19 @@ use crate::solver::LevenbergMarquardt;
 /// scaled to mean `‖∇F‖` 1 (Sec. 3.2.2), so the default weights suit any input; every value
 /// handed back is in the caller's units.
 pub struct FieldSolver {
-    problem: FieldProblem,
-    lm: LevenbergMarquardt,
-    params: FieldParams,
+    pub(super) problem: FieldProblem,
+    pub(super) lm: LevenbergMarquardt,
+    pub(super) params: FieldParams,
     /// Variables of the normalised problem: field, then auxiliaries.
-    x: Vec<f64>,
-    /// Internal field = caller field × `field_scale`.
-    field_scale: f64,
-    stage: usize,
-    stage_iterations: usize,
+    pub(super) x: Vec<f64>,
+    pub(super) scales: Scales,
+    pub(super) stage: usize,
+    pub(super) stage_iterations: usize,
     /// Consecutive iterations of the current stage that lowered `E_pg` by less than the relative tolerance.
-    slow_iterations: usize,
-    iterations: usize,
-    converged: bool,
-    last_report: StepReport,
+    pub(super) slow_iterations: usize,
+    pub(super) iterations: usize,
+    pub(super) converged: bool,
+    pub(super) last_report: StepReport,
 }
 
 impl FieldSolver {
@@ -44,27 +52,34 @@ impl FieldSolver {
         }
         let field_scale = 1.0 / gradient;
         let gradient_target = params.gradient_target.map_or(1.0, |r| r * field_scale / length_scale);
+        let mut x: Vec<f64> = initial_field.iter().map(|f| f * field_scale).collect();
+        let mut solver = FieldSolver::assemble(unit_mesh, params, gradient_target, Scales { field: field_scale, length: length_scale })?;
+        x.resize(solver.x.len(), 0.0);
+        solver.x = x;
+        solver.initialize_auxiliaries();
+        solver.last_report = solver.measure(0, 0);
+        Ok(solver)
+    }
+
+    /// A solver in its first stage with all variables zero, on an already unit-scaled mesh.
+    pub(crate) fn assemble(unit_mesh: TriMesh, params: FieldParams, gradient_target: f64, scales: Scales) -> Result<FieldSolver, FieldError> {
         let (stage, weights) = stage_weights(&params, 0);
         let problem = FieldProblem::new(unit_mesh, params.family, weights, gradient_target);
         let lm = LevenbergMarquardt::new(&problem, params.lm.clone())?;
-        let mut x: Vec<f64> = initial_field.iter().map(|f| f * field_scale).collect();
-        x.resize(crate::solver::LeastSquaresProblem::variable_count(&problem), 0.0);
-        let mut solver = FieldSolver {
+        let x = vec![0.0; problem.variable_count()];
+        Ok(FieldSolver {
             problem,
             lm,
             params,
             x,
-            field_scale,
+            scales,
             stage,
             stage_iterations: 0,
             slow_iterations: 0,
             iterations: 0,
             converged: false,
             last_report: StepReport::default(),
-        };
-        solver.initialize_auxiliaries();
-        solver.last_report = solver.measure(0, 0);
-        Ok(solver)
+        })
     }
 
     /// Runs at most `max_iterations` Levenberg–Marquardt iterations and reports the state.
@@ -102,7 +117,7 @@ impl FieldSolver {
 
     /// The current field, one value per vertex, in the scale of the initial field.
     pub fn field(&self) -> Vec<f64> {
-        self.x[..self.vertex_count()].iter().map(|f| f / self.field_scale).collect()
+        self.x[..self.vertex_count()].iter().map(|f| f / self.scales.field).collect()
     }
 
     /// Unit binormal per vertex: the auxiliary `b` for pseudo-geodesics, the discrete
@@ -230,7 +245,7 @@ impl FieldSolver {
     }
 }
 
-fn stage_weights(params: &FieldParams, stage: usize) -> (usize, Weights) {
+pub(super) fn stage_weights(params: &FieldParams, stage: usize) -> (usize, Weights) {
     match params.schedule.get(stage) {
         Some(s) => (stage, s.weights),
         None => (params.schedule.len(), params.weights),
@@ -249,6 +264,10 @@ fn validate_field(mesh: &TriMesh, field: &[f64]) -> Result<(), FieldError> {
     if let Some(vertex) = field.iter().position(|f| !f.is_finite()) {
         return Err(FieldError::NonFiniteValue { vertex });
     }
+    let (min, max) = field.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &f| (lo.min(f), hi.max(f)));
+    if max - min <= 1e-12 * max.abs().max(min.abs()) {
+        return Err(FieldError::ConstantField);
+    }
     Ok(())
 }
 
@@ -261,7 +280,7 @@ fn validate_weights(w: &Weights) -> Result<(), FieldError> {
     Ok(())
 }
 
-fn validate_params(params: &FieldParams) -> Result<(), FieldError> {
+pub(super) fn validate_params(params: &FieldParams) -> Result<(), FieldError> {
     let theta = params.family.theta_degrees();
     if !(theta.is_finite() && (0.0..=180.0).contains(&theta)) {
         return Err(FieldError::InvalidParameter { name: "theta", message: format!("must lie in [0°, 180°], got {theta}") });

@@ -13,6 +13,7 @@ mod params;
 mod problem;
 mod pseudo_geodesic;
 mod report;
+mod session;
 mod star_chords;
 
 pub use crossing::{find_level_crossing, EdgeCrossing, LevelCrossing};
@@ -22,3 +23,4 @@ pub use field_solver::FieldSolver;
 pub use problem::FieldProblem;
 pub use params::{Family, FieldParams, Stage, Weights, SETTLING_ITERATIONS};
 pub use report::{Energies, StepReport};
+pub use session::{SESSION_MAGIC, SESSION_VERSION};

@@ -98,6 +98,11 @@ impl FieldProblem {
         self.weights
     }
 
+    /// Target `‖∇F‖` of `E_grad` on this problem's scale.
+    pub(crate) fn gradient_target(&self) -> f64 {
+        self.gradient_target
+    }
+
     pub fn set_weights(&mut self, weights: Weights) {
         self.weights = weights;
     }

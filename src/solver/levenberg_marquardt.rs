@@ -14,6 +14,13 @@ use super::{Convergence, IterationOutcome, LeastSquaresProblem, LmOptions, Solve
 /// Upper bound of the damping growth factor ν (it doubles on every rejection).
 const MAX_GROWTH: f64 = 1e12;
 
+/// The adaptive part of the damping: μ (`None` until the first iteration) and its growth factor ν.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct DampingState {
+    pub mu: Option<f64>,
+    pub nu: f64,
+}
+
 /// Solver state: fixed pattern, symbolic factorisation, workspaces, μ and ν.
 pub struct LevenbergMarquardt {
     options: LmOptions,
@@ -73,6 +80,18 @@ impl LevenbergMarquardt {
     /// Current damping μ (0 before the first iteration or after [`Self::reset_damping`]).
     pub fn damping(&self) -> f64 {
         self.mu.unwrap_or(0.0)
+    }
+
+    /// μ and ν, to be saved with a session and handed back to [`Self::restore_damping`], so that
+    /// a restored solve continues exactly as the original would have.
+    pub fn damping_state(&self) -> DampingState {
+        DampingState { mu: self.mu, nu: self.nu }
+    }
+
+    /// Restores μ and ν saved by [`Self::damping_state`].
+    pub fn restore_damping(&mut self, state: DampingState) {
+        self.mu = state.mu;
+        self.nu = state.nu;
     }
 
     /// The next [`Self::iterate`] re-initialises μ from `tau` (call after weights change).

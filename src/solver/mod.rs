@@ -20,7 +20,7 @@ mod structure;
 pub use error::SolverError;
 pub use jacobian_check::check_block_jacobian;
 pub use layout::VariableLayout;
-pub use levenberg_marquardt::LevenbergMarquardt;
+pub use levenberg_marquardt::{DampingState, LevenbergMarquardt};
 pub use options::LmOptions;
 pub use outcome::{Convergence, IterationOutcome};
 pub use problem::LeastSquaresProblem;
