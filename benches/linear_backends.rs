@@ -1,8 +1,9 @@
 //! Sparse Cholesky backends on normal-equation-like matrices: numeric factorisation + solve per
 //! iteration with the symbolic analysis reused, as in every Levenberg–Marquardt trial.
 //!
-//! Matrices: M = LᵀL + εI with L the graph Laplacian of an irregularly triangulated grid, which
-//! has the 2-ring (bilaplacian) stencil of the field problem's normal matrix. Backends:
+//! Matrices: M = LᵀL + εI with L the graph Laplacian of the hall-roof benchmark meshes, which has
+//! the 2-ring stencil of the field problem's Schur-reduced normal matrix (every curve block couples
+//! the field values of a whole vertex star). Backends:
 //! faer's supernodal/simplicial Cholesky (its own AMD ordering) and nalgebra-sparse's
 //! `CscCholesky` on M permuted by AMD from the `amd` crate (nalgebra-sparse has no ordering).
 //!
@@ -16,35 +17,20 @@ use faer::sparse::{SparseColMat, SymbolicSparseColMat};
 use faer::{Conj, MatMut, Side};
 use nalgebra::DMatrix;
 use nalgebra_sparse::factorization::{CscCholesky, CscSymbolicCholesky};
+use lamella::surfaces::hall_roof;
 use nalgebra_sparse::{CooMatrix, CscMatrix};
 
-/// Unknown counts ≈ 600, 3,000, 10,000, 50,000 (grid sides).
-const GRID_SIDES: [usize; 4] = [25, 55, 100, 224];
+/// Vertex counts of the hall-roof benchmark meshes.
+const ROOF_VERTICES: [usize; 4] = [600, 3_000, 10_000, 50_000];
 
-fn xorshift(state: &mut u64) -> u64 {
-    *state ^= *state << 13;
-    *state ^= *state >> 7;
-    *state ^= *state << 17;
-    *state
-}
-
-/// Graph Laplacian of a side×side vertex grid whose quads are split along a random diagonal.
-fn irregular_grid_laplacian(side: usize) -> CscMatrix<f64> {
-    let n = side * side;
-    let mut state = 0x2545_F491_4F6C_DD1Du64;
-    let mut edges = Vec::new();
-    for r in 0..side - 1 {
-        for c in 0..side - 1 {
-            let (a, b, d, e) = (r * side + c, r * side + c + 1, (r + 1) * side + c, (r + 1) * side + c + 1);
-            edges.extend([(a, b), (a, d), (b, e), (d, e)]);
-            edges.push(if xorshift(&mut state) & 1 == 0 { (a, e) } else { (b, d) });
-        }
-    }
-    edges.sort_unstable();
-    edges.dedup();
+/// Graph Laplacian of the hall-roof mesh with about `vertices` vertices.
+fn mesh_laplacian(vertices: usize) -> CscMatrix<f64> {
+    let mesh = hall_roof(vertices).into_mesh().expect("the built-in roof is valid");
+    let n = mesh.vertex_count();
     let mut degree = vec![0.0; n];
     let mut coo = CooMatrix::new(n, n);
-    for &(i, j) in &edges {
+    for &[i, j] in mesh.edges() {
+        let (i, j) = (i as usize, j as usize);
         coo.push(i, j, -1.0);
         coo.push(j, i, -1.0);
         degree[i] += 1.0;
@@ -57,8 +43,8 @@ fn irregular_grid_laplacian(side: usize) -> CscMatrix<f64> {
 }
 
 /// M = LᵀL + εI (symmetric positive definite, full pattern, sorted rows).
-fn bilaplacian(side: usize) -> CscMatrix<f64> {
-    let l = irregular_grid_laplacian(side);
+fn bilaplacian(vertices: usize) -> CscMatrix<f64> {
+    let l = mesh_laplacian(vertices);
     let mut m = &l.transpose() * &l;
     let n = m.nrows();
     for j in 0..n {
@@ -120,8 +106,8 @@ fn residual(m: &CscMatrix<f64>, x: &[f64], b: &[f64]) -> f64 {
 fn linear_backends(c: &mut Criterion) {
     let mut group = c.benchmark_group("numeric_factor_and_solve");
     group.sample_size(10).warm_up_time(Duration::from_millis(500)).measurement_time(Duration::from_secs(2));
-    for side in GRID_SIDES {
-        let m = bilaplacian(side);
+    for vertices in ROOF_VERTICES {
+        let m = bilaplacian(vertices);
         let n = m.nrows();
         let b = rhs(n);
 

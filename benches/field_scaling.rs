@@ -1,0 +1,45 @@
+//! Whole solves of the pseudo-geodesic field on the hall roof at every benchmark size: wall time
+//! from `FieldSolver::new` to convergence, iterations, mean time per iteration, the final accuracy
+//! and the process's peak resident memory (sizes run in increasing order, so the peak after each
+//! line belongs to that size). One run per size: a whole 50k solve takes seconds.
+//!
+//! Run: `cargo bench --bench field_scaling`.
+
+mod support;
+
+use std::time::Instant;
+use support::{roof, solver, ROOF_VERTICES};
+
+/// Peak resident set size of this process in MiB (Linux `VmHWM`), if known.
+fn peak_memory_mib() -> Option<f64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kib: f64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib / 1024.0)
+}
+
+fn main() {
+    // `cargo bench` passes `--bench`; a filter argument (as for criterion) is not supported.
+    println!("| vertices | iterations | full solve (s) | per iteration (ms) | E_angle | max angle error (°) | singular | peak RSS (MiB) |");
+    println!("|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for vertices in ROOF_VERTICES {
+        let mesh = roof(vertices);
+        let started = Instant::now();
+        let mut s = solver(&mesh);
+        let prepared = started.elapsed();
+        let report = s.step(500).expect("solver runs");
+        let total = started.elapsed();
+        let per_iteration = (total - prepared).as_secs_f64() / report.iterations.max(1) as f64;
+        println!(
+            "| {} | {} | {:.2} | {:.1} | {:.1e} | {:.3} | {} | {:.0} |",
+            mesh.vertex_count(),
+            report.iterations,
+            total.as_secs_f64(),
+            per_iteration * 1e3,
+            report.energies.angle,
+            report.angle_error_max_degrees,
+            report.singular_vertices.len(),
+            peak_memory_mib().unwrap_or(f64::NAN)
+        );
+    }
+}
