@@ -1,29 +1,23 @@
 //! Levenberg–Marquardt on small classical problems: Rosenbrock, exponential-decay fitting, and a
 //! start whose Gauss–Newton step must be rejected.
+mod solver_support;
+
 use lamella::solver::{Convergence, LeastSquaresProblem, LevenbergMarquardt, LmOptions};
+use solver_support::OneBlock;
 
 /// Rosenbrock as residuals r = (10(y − x²), 1 − x).
-struct Rosenbrock;
-
-impl LeastSquaresProblem for Rosenbrock {
-    fn variable_count(&self) -> usize {
-        2
-    }
-    fn block_count(&self) -> usize {
-        1
-    }
-    fn block_variables(&self, _b: usize) -> &[u32] {
-        &[0, 1]
-    }
-    fn block_residual_count(&self, _b: usize) -> usize {
-        2
-    }
-    fn evaluate_block(&self, _b: usize, x: &[f64], r: &mut [f64], jacobian: Option<&mut [f64]>) {
-        r[0] = 10.0 * (x[1] - x[0] * x[0]);
-        r[1] = 1.0 - x[0];
-        if let Some(j) = jacobian {
-            j.copy_from_slice(&[-20.0 * x[0], 10.0, -1.0, 0.0]);
-        }
+fn rosenbrock() -> impl LeastSquaresProblem {
+    OneBlock {
+        variable_count: 2,
+        variables: vec![0, 1],
+        residual_count: 2,
+        evaluate: |x: &[f64], r: &mut [f64], jacobian: Option<&mut [f64]>| {
+            r[0] = 10.0 * (x[1] - x[0] * x[0]);
+            r[1] = 1.0 - x[0];
+            if let Some(j) = jacobian {
+                j.copy_from_slice(&[-20.0 * x[0], 10.0, -1.0, 0.0]);
+            }
+        },
     }
 }
 
@@ -44,7 +38,7 @@ fn solve<P: LeastSquaresProblem>(problem: &P, x: &mut [f64], options: LmOptions,
 #[test]
 fn rosenbrock_converges_to_one_one() {
     let mut x = [-1.2, 1.0];
-    let energies = solve(&Rosenbrock, &mut x, LmOptions::default(), 200);
+    let energies = solve(&rosenbrock(), &mut x, LmOptions::default(), 200);
     assert!((x[0] - 1.0).abs() < 1e-8 && (x[1] - 1.0).abs() < 1e-8, "{x:?}");
     assert!(energies.windows(2).all(|w| w[1] <= w[0]));
 }
@@ -131,26 +125,17 @@ fn exponential_decay_fit_recovers_parameters_within_their_standard_errors() {
 
 /// r(x) = atan(x): from x = 2 the Gauss–Newton step −r/r' = −5 atan 2 overshoots to x ≈ −3.5
 /// where |atan| is larger, so the first, nearly undamped trial must be rejected.
-struct Arctangent;
-
-impl LeastSquaresProblem for Arctangent {
-    fn variable_count(&self) -> usize {
-        1
-    }
-    fn block_count(&self) -> usize {
-        1
-    }
-    fn block_variables(&self, _b: usize) -> &[u32] {
-        &[0]
-    }
-    fn block_residual_count(&self, _b: usize) -> usize {
-        1
-    }
-    fn evaluate_block(&self, _b: usize, x: &[f64], r: &mut [f64], jacobian: Option<&mut [f64]>) {
-        r[0] = x[0].atan();
-        if let Some(j) = jacobian {
-            j[0] = 1.0 / (1.0 + x[0] * x[0]);
-        }
+fn arctangent() -> impl LeastSquaresProblem {
+    OneBlock {
+        variable_count: 1,
+        variables: vec![0],
+        residual_count: 1,
+        evaluate: |x: &[f64], r: &mut [f64], jacobian: Option<&mut [f64]>| {
+            r[0] = x[0].atan();
+            if let Some(j) = jacobian {
+                j[0] = 1.0 / (1.0 + x[0] * x[0]);
+            }
+        },
     }
 }
 
@@ -158,9 +143,9 @@ impl LeastSquaresProblem for Arctangent {
 fn overshooting_step_is_rejected_and_damping_grows() {
     let options = LmOptions { tau: 1e-6, ..LmOptions::default() };
     let initial_damping = options.tau * (1.0f64 / 5.0).powi(2);
-    let mut solver = LevenbergMarquardt::new(&Arctangent, options.clone()).unwrap();
+    let mut solver = LevenbergMarquardt::new(&arctangent(), options.clone()).unwrap();
     let mut x = [2.0];
-    let outcome = solver.iterate(&Arctangent, &mut x).unwrap();
+    let outcome = solver.iterate(&arctangent(), &mut x).unwrap();
     assert!(outcome.trials >= 2, "{outcome:?}");
     assert!(outcome.accepted);
     assert!(outcome.energy_after < outcome.energy_before);
@@ -170,7 +155,7 @@ fn overshooting_step_is_rejected_and_damping_grows() {
     // Continue to the root x = 0.
     let mut converged = None;
     for _ in 0..100 {
-        let o = solver.iterate(&Arctangent, &mut x).unwrap();
+        let o = solver.iterate(&arctangent(), &mut x).unwrap();
         assert!(o.energy_after <= o.energy_before);
         if o.converged.is_some() {
             converged = o.converged;
@@ -184,8 +169,9 @@ fn overshooting_step_is_rejected_and_damping_grows() {
 #[test]
 fn zero_residual_reports_convergence_without_moving() {
     let mut x = [1.0, 1.0];
-    let mut solver = LevenbergMarquardt::new(&Rosenbrock, LmOptions::default()).unwrap();
-    let outcome = solver.iterate(&Rosenbrock, &mut x).unwrap();
+    let problem = rosenbrock();
+    let mut solver = LevenbergMarquardt::new(&problem, LmOptions::default()).unwrap();
+    let outcome = solver.iterate(&problem, &mut x).unwrap();
     assert_eq!(x, [1.0, 1.0]);
     assert!(!outcome.accepted);
     assert_eq!(outcome.trials, 0);
@@ -194,35 +180,26 @@ fn zero_residual_reports_convergence_without_moving() {
 
 /// r = x0 + x1 − 2: JᵀJ = [[1, 1], [1, 1]] is singular, so with μ = 1e-20 (below the rounding
 /// of 1 + μ) the sparse Cholesky fails until the damping has grown.
-struct RankDeficient;
-
-impl LeastSquaresProblem for RankDeficient {
-    fn variable_count(&self) -> usize {
-        2
-    }
-    fn block_count(&self) -> usize {
-        1
-    }
-    fn block_variables(&self, _b: usize) -> &[u32] {
-        &[0, 1]
-    }
-    fn block_residual_count(&self, _b: usize) -> usize {
-        1
-    }
-    fn evaluate_block(&self, _b: usize, x: &[f64], r: &mut [f64], jacobian: Option<&mut [f64]>) {
-        r[0] = x[0] + x[1] - 2.0;
-        if let Some(j) = jacobian {
-            j.copy_from_slice(&[1.0, 1.0]);
-        }
+fn rank_deficient() -> impl LeastSquaresProblem {
+    OneBlock {
+        variable_count: 2,
+        variables: vec![0, 1],
+        residual_count: 1,
+        evaluate: |x: &[f64], r: &mut [f64], jacobian: Option<&mut [f64]>| {
+            r[0] = x[0] + x[1] - 2.0;
+            if let Some(j) = jacobian {
+                j.copy_from_slice(&[1.0, 1.0]);
+            }
+        },
     }
 }
 
 #[test]
 fn failed_factorisation_is_a_rejected_trial_with_more_damping() {
     let options = LmOptions { tau: 0.0, min_damping: 1e-20, ..LmOptions::default() };
-    let mut solver = LevenbergMarquardt::new(&RankDeficient, options.clone()).unwrap();
+    let mut solver = LevenbergMarquardt::new(&rank_deficient(), options.clone()).unwrap();
     let mut x = [0.0, 0.0];
-    let outcome = solver.iterate(&RankDeficient, &mut x).unwrap();
+    let outcome = solver.iterate(&rank_deficient(), &mut x).unwrap();
     assert!(outcome.trials > 1 && outcome.accepted, "{outcome:?}");
     assert!(outcome.energy_after < 1e-6 * outcome.energy_before);
     // The damping had to grow past the rounding of 1 + μ before a factorisation succeeded.
@@ -230,9 +207,9 @@ fn failed_factorisation_is_a_rejected_trial_with_more_damping() {
     assert!((x[0] + x[1] - 2.0).abs() < 1e-6, "{x:?}");
 
     let single = LmOptions { max_trials: 1, ..options };
-    let mut solver = LevenbergMarquardt::new(&RankDeficient, single).unwrap();
+    let mut solver = LevenbergMarquardt::new(&rank_deficient(), single).unwrap();
     let mut x = [0.0, 0.0];
-    let e = solver.iterate(&RankDeficient, &mut x).unwrap_err();
+    let e = solver.iterate(&rank_deficient(), &mut x).unwrap_err();
     assert_eq!(e, lamella::solver::SolverError::FactorizationFailed { trials: 1 });
     assert_eq!(x, [0.0, 0.0]);
 }
