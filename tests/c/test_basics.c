@@ -1,6 +1,7 @@
 #include "check.h"
 #include "harness.h"
 
+#include <stdio.h>
 #include <string.h>
 
 void test_basics(void)
@@ -14,6 +15,8 @@ void test_basics(void)
     CHECK(strcmp(lml_status_name(12345), "LML_STATUS_UNKNOWN") == 0);
 
     /* A panic inside the library comes back as a status, never as an unwind into C. */
+    printf("  (a panic message from lml_debug_trigger_panic on stderr is expected)\n");
+    fflush(stdout);
     CHECK_STATUS(lml_debug_trigger_panic(), LML_STATUS_INTERNAL_ERROR);
     CHECK_MESSAGE("panic");
     /* The message is per call: a successful call clears it. */
