@@ -118,19 +118,20 @@ typedef struct LmlWeights {
 } LmlWeights;
 
 // Parameters of a field optimisation. Fill it with `lml_field_params_default`, then change
-// fields as needed. Lengths are in the mesh's unit, angles in degrees.
+// fields as needed. Lengths are in the mesh's unit, angles in degrees. (No padding: the two
+// 32-bit fields come first.)
 typedef struct LmlFieldParams {
   // One of the `LML_FAMILY_*` constants.
   LmlFamily family;
+  // 1: first run the library's short warm-up continuation (small λ_angle, larger λ_grad,
+  // paper Fig. 15), then `weights`; 0: use `weights` from the start. Default 1.
+  uint32_t warm_up;
   // Target angle between binormal and surface normal in degrees, in [0, 180]; used by
   // `LML_FAMILY_PSEUDO_GEODESIC` (θ and 180° − θ are the two mirror families), ignored otherwise.
   double theta_degrees;
   // The final weights, held until convergence (default: λ_fair 1e-3, λ_grad 1e-4,
   // λ_angle 30, the paper's Table 2, on the normalised problem).
   struct LmlWeights weights;
-  // 1: first run the library's short warm-up continuation (small λ_angle, larger λ_grad,
-  // paper Fig. 15), then `weights`; 0: use `weights` from the start. Default 1.
-  uint32_t warm_up;
   // Target gradient norm ‖∇F‖ of `E_grad` in field units per mesh length unit (strip
   // spacing ≈ 1 / target); 0 keeps the mean gradient norm of the initial field. Default 0.
   double gradient_target;
@@ -172,8 +173,9 @@ typedef struct LmlReport {
   uint64_t flips;
   // Levenberg–Marquardt damping μ after the last iteration.
   double damping;
-  // 1 when the final stage has converged (further steps do nothing), else 0.
-  uint32_t converged;
+  // 1 when the final stage has converged (further steps do nothing), else 0. (64 bits, like
+  // every field, so that the struct has no padding.)
+  uint64_t converged;
 } LmlReport;
 
 // Pseudo-geodesics: the binormal keeps the angle `theta_degrees` to the surface normal

@@ -27,21 +27,22 @@ pub struct LmlWeights {
 }
 
 /// Parameters of a field optimisation. Fill it with `lml_field_params_default`, then change
-/// fields as needed. Lengths are in the mesh's unit, angles in degrees.
+/// fields as needed. Lengths are in the mesh's unit, angles in degrees. (No padding: the two
+/// 32-bit fields come first.)
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LmlFieldParams {
     /// One of the `LML_FAMILY_*` constants.
     pub family: LmlFamily,
+    /// 1: first run the library's short warm-up continuation (small λ_angle, larger λ_grad,
+    /// paper Fig. 15), then `weights`; 0: use `weights` from the start. Default 1.
+    pub warm_up: u32,
     /// Target angle between binormal and surface normal in degrees, in [0, 180]; used by
     /// `LML_FAMILY_PSEUDO_GEODESIC` (θ and 180° − θ are the two mirror families), ignored otherwise.
     pub theta_degrees: f64,
     /// The final weights, held until convergence (default: λ_fair 1e-3, λ_grad 1e-4,
     /// λ_angle 30, the paper's Table 2, on the normalised problem).
     pub weights: LmlWeights,
-    /// 1: first run the library's short warm-up continuation (small λ_angle, larger λ_grad,
-    /// paper Fig. 15), then `weights`; 0: use `weights` from the start. Default 1.
-    pub warm_up: u32,
     /// Target gradient norm ‖∇F‖ of `E_grad` in field units per mesh length unit (strip
     /// spacing ≈ 1 / target); 0 keeps the mean gradient norm of the initial field. Default 0.
     pub gradient_target: f64,

@@ -4,7 +4,8 @@
 //! Each function runs inside [`guard::guarded`], which catches panics and turns every failure
 //! into an [`LmlStatus`] plus a thread-local message ([`lml_last_error_message`]); no panic and
 //! no undefined behaviour caused by a NULL pointer, a wrong length or a non-finite number can
-//! reach the caller. Raw pointers are touched only in [`raw`].
+//! reach the caller. Raw pointers are touched only in [`raw`]. The few functions that return a
+//! value rather than a status (versions, status names, the error message) cannot fail or panic.
 //!
 //! Today the ABI covers meshes ([`LmlMesh`]) and field solver sessions ([`LmlField`]); level
 //! curves and strips will follow as `LmlCurves` / `LmlStrips` in the same style (a handle
@@ -13,6 +14,11 @@
 //! The header is generated from this module by cbindgen (configuration in `cbindgen.toml`);
 //! `tests/ffi_header.rs` fails when the committed header is stale and rewrites it when
 //! `LAMELLA_UPDATE_HEADER=1` is set.
+
+// Every exported function is `unsafe extern "C"`: its pointer contract (what cannot be checked:
+// that a non-NULL pointer covers the stated count, that a handle is live and used by one thread
+// at a time) is the one stated once in the header's top comment and on each function.
+#![allow(clippy::missing_safety_doc)]
 
 // Declared in the order of the header: versions and errors first, then one module per handle.
 mod version;

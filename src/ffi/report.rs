@@ -37,8 +37,9 @@ pub struct LmlReport {
     pub flips: u64,
     /// Levenberg–Marquardt damping μ after the last iteration.
     pub damping: f64,
-    /// 1 when the final stage has converged (further steps do nothing), else 0.
-    pub converged: u32,
+    /// 1 when the final stage has converged (further steps do nothing), else 0. (64 bits, like
+    /// every field, so that the struct has no padding.)
+    pub converged: u64,
 }
 
 impl From<&StepReport> for LmlReport {
@@ -59,7 +60,7 @@ impl From<&StepReport> for LmlReport {
             singular_vertex_count: count(r.singular_vertices.len()),
             flips: count(r.flips),
             damping: r.damping,
-            converged: u32::from(r.converged),
+            converged: u64::from(r.converged),
         }
     }
 }
