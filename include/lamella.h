@@ -252,7 +252,7 @@ LmlStatus lml_mesh_new(const double *xyz,
 LmlStatus lml_mesh_read_obj(const char *path, struct LmlMesh **out);
 
 // Releases a mesh. NULL is accepted and ignored. Fields created from the mesh keep working
-// (they hold their own copy).
+// (they hold their own copy). The handle must not be used (or freed) again.
 void lml_mesh_free(struct LmlMesh *mesh);
 
 // Writes the number of vertices to `*count`.
@@ -311,7 +311,7 @@ LmlStatus lml_field_new(const struct LmlMesh *mesh,
                         const struct LmlFieldParams *params,
                         struct LmlField **out);
 
-// Releases a session. NULL is accepted and ignored.
+// Releases a session. NULL is accepted and ignored. The handle must not be used (or freed) again.
 void lml_field_free(struct LmlField *field);
 
 // Runs at most `max_iterations` iterations of the optimisation and reports its state in
@@ -362,6 +362,7 @@ LmlStatus lml_field_values(const struct LmlField *field,
 // and where the level curve is straight.
 //
 // Two-call pattern as `lml_field_values` (`capacity` and `*needed` count doubles).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
 LmlStatus lml_field_binormals(const struct LmlField *field,
                               double *out,
                               size_t capacity,
@@ -371,6 +372,7 @@ LmlStatus lml_field_binormals(const struct LmlField *field,
 // as `lml_field_binormals`; zero vectors at boundary and singular vertices.
 //
 // Two-call pattern as `lml_field_values` (`capacity` and `*needed` count doubles).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
 LmlStatus lml_field_side_vectors(const struct LmlField *field,
                                  double *out,
                                  size_t capacity,
@@ -381,6 +383,7 @@ LmlStatus lml_field_side_vectors(const struct LmlField *field,
 //
 // Two-call pattern as `lml_field_values` (`capacity` and `*needed` count indices; `*needed`
 // may be 0, and then `out` may be NULL and the call succeeds).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
 LmlStatus lml_field_singular_vertices(const struct LmlField *field,
                                       uint32_t *out,
                                       size_t capacity,

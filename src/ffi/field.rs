@@ -49,7 +49,7 @@ pub unsafe extern "C" fn lml_field_new(
     })
 }
 
-/// Releases a session. NULL is accepted and ignored.
+/// Releases a session. NULL is accepted and ignored. The handle must not be used (or freed) again.
 #[no_mangle]
 pub unsafe extern "C" fn lml_field_free(field: *mut LmlField) {
     guarded(|| {
@@ -156,6 +156,7 @@ pub unsafe extern "C" fn lml_field_values(field: *const LmlField, out: *mut f64,
 /// and where the level curve is straight.
 ///
 /// Two-call pattern as `lml_field_values` (`capacity` and `*needed` count doubles).
+/// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
 #[no_mangle]
 pub unsafe extern "C" fn lml_field_binormals(field: *const LmlField, out: *mut f64, capacity: usize, needed: *mut usize) -> LmlStatus {
     guarded(|| {
@@ -169,6 +170,7 @@ pub unsafe extern "C" fn lml_field_binormals(field: *const LmlField, out: *mut f
 /// as `lml_field_binormals`; zero vectors at boundary and singular vertices.
 ///
 /// Two-call pattern as `lml_field_values` (`capacity` and `*needed` count doubles).
+/// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
 #[no_mangle]
 pub unsafe extern "C" fn lml_field_side_vectors(field: *const LmlField, out: *mut f64, capacity: usize, needed: *mut usize) -> LmlStatus {
     guarded(|| {
@@ -183,6 +185,7 @@ pub unsafe extern "C" fn lml_field_side_vectors(field: *const LmlField, out: *mu
 ///
 /// Two-call pattern as `lml_field_values` (`capacity` and `*needed` count indices; `*needed`
 /// may be 0, and then `out` may be NULL and the call succeeds).
+/// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
 #[no_mangle]
 pub unsafe extern "C" fn lml_field_singular_vertices(field: *const LmlField, out: *mut u32, capacity: usize, needed: *mut usize) -> LmlStatus {
     guarded(|| {

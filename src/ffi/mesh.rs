@@ -70,7 +70,7 @@ pub unsafe extern "C" fn lml_mesh_read_obj(path: *const c_char, out: *mut *mut L
 }
 
 /// Releases a mesh. NULL is accepted and ignored. Fields created from the mesh keep working
-/// (they hold their own copy).
+/// (they hold their own copy). The handle must not be used (or freed) again.
 #[no_mangle]
 pub unsafe extern "C" fn lml_mesh_free(mesh: *mut LmlMesh) {
     guarded(|| {
