@@ -315,8 +315,9 @@ LmlStatus lml_field_new(const struct LmlMesh *mesh,
 void lml_field_free(struct LmlField *field);
 
 // Runs at most `max_iterations` iterations of the optimisation and reports its state in
-// `*report` (caller-owned; may be NULL when not wanted). Between steps the caller may read the
-// field, change the weights, save the session, or stop.
+// `*report` (caller-owned; may be NULL when not wanted; written when the call returns
+// `LML_STATUS_MORE` or `LML_STATUS_CONVERGED`). Between steps the caller may read the field,
+// change the weights, save the session, or stop.
 //
 // Returns `LML_STATUS_MORE` (not converged yet: step again), `LML_STATUS_CONVERGED` (further
 // steps do nothing), `LML_STATUS_INVALID_ARGUMENT` (NULL or misaligned pointer), or
@@ -325,7 +326,8 @@ void lml_field_free(struct LmlField *field);
 LmlStatus lml_field_step(struct LmlField *field, uint32_t max_iterations, struct LmlReport *report);
 
 // Like `lml_field_step`, for callers that want the answer in one call: runs until convergence
-// but at most `max_iterations` iterations, and writes the final state to `*report` (may be NULL).
+// but at most `max_iterations` iterations, and writes the final state to `*report` (may be NULL;
+// written unless an argument is invalid or an iteration failed numerically).
 //
 // Returns `LML_STATUS_CONVERGED`, `LML_STATUS_DID_NOT_CONVERGE` (the budget was used up or an
 // iteration failed; the session stays usable and can be stepped on), or
