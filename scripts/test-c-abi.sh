@@ -21,7 +21,7 @@ fi
 
 cflags=(-std=c99 -Wall -Wextra -Werror -pedantic -O1 -g -Iinclude)
 cxxflags=(-std=c++17 -Wall -Wextra -Werror -O1 -g -Iinclude)
-link=(-L"$lib" -Wl,-rpath,"$PWD/$lib" -llamella -lm)
+link=(-L"$lib" -Wl,-rpath,"$PWD/$lib" -llamella -lm -pthread)
 
 echo "== C ABI: header as C99 and C++17"
 echo '#include "lamella.h"' | cc "${cflags[@]}" -x c -fsyntax-only -

@@ -20,6 +20,7 @@ int main(int argc, char **argv)
     test_basics();
     test_mesh(scratch);
     test_field_inputs(&cylinder);
+    test_threads(&cylinder);
     field = test_solve(&cylinder);
     CHECK(field != NULL);
     if (field != NULL) {

@@ -14,6 +14,8 @@ void test_field_inputs(const Cylinder *cylinder);
 /* The real solve: theta = 60 degrees step by step on the cylinder, checked against its geometry.
  * Returns the converged session (owned by the caller) or NULL. */
 LmlField *test_solve(const Cylinder *cylinder);
+/* Handles moved between threads, different handles used concurrently, per-thread messages. */
+void test_threads(const Cylinder *cylinder);
 /* Save / load round trip of a session and corrupted, truncated and future-version data. */
 void test_session(LmlField *field);
 
