@@ -3,3 +3,4 @@ pub mod mesh;
 pub mod solver;
 pub mod field;
 pub mod surfaces;
+pub mod ffi;

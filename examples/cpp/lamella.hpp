@@ -1,0 +1,132 @@
+// A thin RAII layer over Lamella's C ABI (include/lamella.h), showing how a C++ CAD
+// integration holds the handles: each handle lives in a std::unique_ptr with a custom
+// deleter, and every failing status becomes a lamella::Error carrying the library's message.
+#ifndef LAMELLA_HPP
+#define LAMELLA_HPP
+
+#include "lamella.h"
+
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lamella {
+
+// A failed call: the status and the library's message (copied, so it outlives later calls).
+class Error : public std::runtime_error {
+public:
+    Error(LmlStatus status, const std::string &call)
+        : std::runtime_error(call + ": " + lml_status_name(status) + ": " + lml_last_error_message()),
+          status_(status) {}
+    LmlStatus status() const { return status_; }
+
+private:
+    LmlStatus status_;
+};
+
+// Passes successes (OK, MORE, CONVERGED) through and throws on failures.
+inline LmlStatus check(LmlStatus status, const char *call) {
+    if (status < 0) {
+        throw Error(status, call);
+    }
+    return status;
+}
+
+struct MeshDeleter {
+    void operator()(LmlMesh *mesh) const noexcept { lml_mesh_free(mesh); }
+};
+struct FieldDeleter {
+    void operator()(LmlField *field) const noexcept { lml_field_free(field); }
+};
+using MeshHandle = std::unique_ptr<LmlMesh, MeshDeleter>;
+using FieldHandle = std::unique_ptr<LmlField, FieldDeleter>;
+
+// The two-call pattern: asks for the size, then fills a vector of exactly that size.
+template <class T, class Get>
+std::vector<T> fetch(Get get, const char *call) {
+    std::size_t needed = 0;
+    LmlStatus status = get(nullptr, 0, &needed);
+    if (status != LML_STATUS_BUFFER_TOO_SMALL) {
+        check(status, call);
+    }
+    std::vector<T> out(needed);
+    check(get(out.data(), out.size(), &needed), call);
+    return out;
+}
+
+class Mesh {
+public:
+    static Mesh from_arrays(const std::vector<double> &xyz, const std::vector<std::uint32_t> &triangles) {
+        LmlMesh *raw = nullptr;
+        check(lml_mesh_new(xyz.data(), xyz.size() / 3, triangles.data(), triangles.size() / 3, &raw), "lml_mesh_new");
+        return Mesh(MeshHandle(raw));
+    }
+    static Mesh read_obj(const std::string &path) {
+        LmlMesh *raw = nullptr;
+        check(lml_mesh_read_obj(path.c_str(), &raw), "lml_mesh_read_obj");
+        return Mesh(MeshHandle(raw));
+    }
+    std::vector<double> positions() const {
+        return fetch<double>([&](double *out, std::size_t capacity, std::size_t *needed) {
+            return lml_mesh_positions(handle_.get(), out, capacity, needed);
+        }, "lml_mesh_positions");
+    }
+    std::vector<std::uint32_t> triangles() const {
+        return fetch<std::uint32_t>([&](std::uint32_t *out, std::size_t capacity, std::size_t *needed) {
+            return lml_mesh_triangles(handle_.get(), out, capacity, needed);
+        }, "lml_mesh_triangles");
+    }
+    const LmlMesh *get() const { return handle_.get(); }
+
+private:
+    explicit Mesh(MeshHandle handle) : handle_(std::move(handle)) {}
+    MeshHandle handle_;
+};
+
+class Field {
+public:
+    Field(const Mesh &mesh, const std::vector<double> &initial, const LmlFieldParams &params) {
+        LmlField *raw = nullptr;
+        check(lml_field_new(mesh.get(), initial.data(), initial.size(), &params, &raw), "lml_field_new");
+        handle_.reset(raw);
+    }
+    static LmlFieldParams pseudo_geodesic(double theta_degrees) {
+        LmlFieldParams params;
+        check(lml_field_params_default(LML_FAMILY_PSEUDO_GEODESIC, theta_degrees, &params), "lml_field_params_default");
+        return params;
+    }
+    // Runs at most `max_iterations`; true once converged.
+    bool step(std::uint32_t max_iterations, LmlReport &report) {
+        return check(lml_field_step(handle_.get(), max_iterations, &report), "lml_field_step") == LML_STATUS_CONVERGED;
+    }
+    std::vector<double> values() const {
+        return fetch<double>([&](double *out, std::size_t capacity, std::size_t *needed) {
+            return lml_field_values(handle_.get(), out, capacity, needed);
+        }, "lml_field_values");
+    }
+    std::vector<double> binormals() const {
+        return fetch<double>([&](double *out, std::size_t capacity, std::size_t *needed) {
+            return lml_field_binormals(handle_.get(), out, capacity, needed);
+        }, "lml_field_binormals");
+    }
+    std::vector<std::uint8_t> save() const {
+        return fetch<std::uint8_t>([&](std::uint8_t *out, std::size_t capacity, std::size_t *needed) {
+            return lml_field_save(handle_.get(), out, capacity, needed);
+        }, "lml_field_save");
+    }
+    static Field load(const std::vector<std::uint8_t> &bytes) {
+        LmlField *raw = nullptr;
+        check(lml_field_load(bytes.data(), bytes.size(), &raw), "lml_field_load");
+        return Field(FieldHandle(raw));
+    }
+
+private:
+    explicit Field(FieldHandle handle) : handle_(std::move(handle)) {}
+    FieldHandle handle_;
+};
+
+}  // namespace lamella
+
+#endif

@@ -1,0 +1,54 @@
+//! A failed call: its status and message, and how the library's Rust errors map to statuses.
+
+use super::status::LmlStatus;
+use crate::field::FieldError;
+use crate::mesh::MeshError;
+use crate::solver::SolverError;
+
+/// Why an `lml_*` call failed.
+#[derive(Debug)]
+pub(crate) struct Failure {
+    pub status: LmlStatus,
+    pub message: String,
+}
+
+impl Failure {
+    pub fn new(status: LmlStatus, message: impl Into<String>) -> Failure {
+        Failure { status, message: message.into() }
+    }
+
+    /// `LML_STATUS_INVALID_ARGUMENT` about the argument `name`.
+    pub fn argument(name: &str, problem: impl std::fmt::Display) -> Failure {
+        Failure::new(LmlStatus::InvalidArgument, format!("argument `{name}`: {problem}"))
+    }
+}
+
+impl From<MeshError> for Failure {
+    fn from(e: MeshError) -> Failure {
+        Failure::new(mesh_status(&e), e.to_string())
+    }
+}
+
+fn mesh_status(e: &MeshError) -> LmlStatus {
+    match e {
+        MeshError::NotDisk { .. } | MeshError::MultipleComponents { .. } => LmlStatus::NotADisk,
+        MeshError::ObjLine { error, .. } => mesh_status(error),
+        MeshError::Io { .. } | MeshError::ArrayLength { .. } | MeshError::InvalidScaleFactor { .. } => LmlStatus::InvalidArgument,
+        _ => LmlStatus::InvalidMesh,
+    }
+}
+
+impl From<FieldError> for Failure {
+    fn from(e: FieldError) -> Failure {
+        let status = match &e {
+            FieldError::FieldLength { .. } | FieldError::NonFiniteValue { .. } | FieldError::InvalidParameter { .. } => LmlStatus::InvalidArgument,
+            FieldError::ConstantField => LmlStatus::SingularField,
+            FieldError::CorruptData { .. } | FieldError::UnsupportedVersion { .. } => LmlStatus::CorruptData,
+            FieldError::Solver(
+                SolverError::NonFiniteResidual { .. } | SolverError::NonFiniteJacobian { .. } | SolverError::FactorizationFailed { .. },
+            ) => LmlStatus::DidNotConverge,
+            _ => LmlStatus::InternalError,
+        };
+        Failure::new(status, e.to_string())
+    }
+}

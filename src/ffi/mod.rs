@@ -1,0 +1,44 @@
+//! The C ABI (`include/lamella.h`): opaque handles, stepwise solving, flat arrays, status codes.
+//!
+//! Every exported item is named `lml_*` (functions), `Lml*` (types) or `LML_*` (constants).
+//! Each function runs inside [`guard::guarded`], which catches panics and turns every failure
+//! into an [`LmlStatus`] plus a thread-local message ([`lml_last_error_message`]); no panic and
+//! no undefined behaviour caused by a NULL pointer, a wrong length or a non-finite number can
+//! reach the caller. Raw pointers are touched only in [`raw`]. The few functions that return a
+//! value rather than a status (versions, status names, the error message) cannot fail or panic.
+//!
+//! Today the ABI covers meshes ([`LmlMesh`]) and field solver sessions ([`LmlField`]); level
+//! curves and strips will follow as `LmlCurves` / `LmlStrips` in the same style (a handle
+//! module, `lml_<handle>_new` / `_free`, two-call array outputs).
+//!
+//! The header is generated from this module by cbindgen (configuration in `cbindgen.toml`);
+//! `tests/ffi_header.rs` fails when the committed header is stale and rewrites it when
+//! `LAMELLA_UPDATE_HEADER=1` is set.
+
+// Every exported function is `unsafe extern "C"`: its pointer contract (what cannot be checked:
+// that a non-NULL pointer covers the stated count, that a handle is live and used by one thread
+// at a time) is the one stated once in the header's top comment and on each function.
+#![allow(clippy::missing_safety_doc)]
+
+// Declared in the order of the header: versions and errors first, then one module per handle.
+mod version;
+mod status;
+mod last_error;
+mod guard;
+mod failure;
+mod raw;
+mod mesh;
+mod field_params;
+mod report;
+mod field;
+mod session;
+
+pub use field::*;
+pub use field_params::*;
+pub use guard::lml_debug_trigger_panic;
+pub use last_error::lml_last_error_message;
+pub use mesh::*;
+pub use report::*;
+pub use session::*;
+pub use status::*;
+pub use version::*;

@@ -1,0 +1,67 @@
+#include "check.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static int passed;
+static int failed;
+
+/* Status codes run from -8 to 2; index = code + 8. */
+#define STATUS_MIN (-8)
+#define STATUS_MAX 2
+static int seen[STATUS_MAX - STATUS_MIN + 1];
+
+void check(int ok, const char *file, int line, const char *what)
+{
+    if (ok) {
+        passed++;
+        return;
+    }
+    failed++;
+    printf("FAIL %s:%d: %s\n     last error: %s\n", file, line, what, lml_last_error_message());
+}
+
+void check_status(LmlStatus status, LmlStatus expected, const char *file, int line, const char *call)
+{
+    if (status == expected) {
+        if (status >= STATUS_MIN && status <= STATUS_MAX) {
+            seen[status - STATUS_MIN] = 1;
+        }
+        passed++;
+        return;
+    }
+    failed++;
+    printf("FAIL %s:%d: %s\n     returned %s, expected %s\n     last error: %s\n", file, line, call,
+           lml_status_name(status), lml_status_name(expected), lml_last_error_message());
+}
+
+void check_message(const char *part, const char *file, int line)
+{
+    const char *message = lml_last_error_message();
+    if (message != NULL && strstr(message, part) != NULL) {
+        passed++;
+        return;
+    }
+    failed++;
+    printf("FAIL %s:%d: last error message \"%s\" does not mention \"%s\"\n", file, line,
+           message ? message : "(NULL)", part);
+}
+
+int every_status_seen(void)
+{
+    int all = 1;
+    int code;
+    for (code = STATUS_MIN; code <= STATUS_MAX; code++) {
+        if (!seen[code - STATUS_MIN]) {
+            printf("status %s was never provoked\n", lml_status_name(code));
+            all = 0;
+        }
+    }
+    return all;
+}
+
+int check_summary(void)
+{
+    printf("%d passed, %d failed\n", passed, failed);
+    return failed == 0 ? 0 : 1;
+}

@@ -1,0 +1,22 @@
+/* The test groups of the C ABI harness (one file each). */
+#ifndef LAMELLA_HARNESS_H
+#define LAMELLA_HARNESS_H
+
+#include "cylinder.h"
+#include "lamella.h"
+
+/* Versions, status names, error messages, the panic guard. */
+void test_basics(void);
+/* Mesh lifecycle, accessors, OBJ files (written into `scratch_dir`) and every invalid input. */
+void test_mesh(const char *scratch_dir);
+/* Field parameters and every invalid input of a field session. */
+void test_field_inputs(const Cylinder *cylinder);
+/* The real solve: theta = 60 degrees step by step on the cylinder, checked against its geometry.
+ * Returns the converged session (owned by the caller) or NULL. */
+LmlField *test_solve(const Cylinder *cylinder);
+/* Handles moved between threads, different handles used concurrently, per-thread messages. */
+void test_threads(const Cylinder *cylinder);
+/* Save / load round trip of a session and corrupted, truncated and future-version data. */
+void test_session(LmlField *field);
+
+#endif
