@@ -1,8 +1,14 @@
 #!/usr/bin/env bash
-# Runs every test of the project. Today that is the Rust suite: unit tests, integration
-# tests under tests/ and doc tests. Needs only the Rust toolchain.
+# Runs every test of the project:
+#   1. the Rust suite: unit tests, integration tests under tests/, doc tests, and the check that
+#      include/lamella.h matches what cbindgen generates from the source;
+#   2. the C ABI from the outside (scripts/test-c-abi.sh): strict C99 harness under valgrind,
+#      the header as C++17, the C and C++ examples.
+# Needs the Rust toolchain, cc/c++ and valgrind (installed by the C ABI script if missing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 echo "== Rust tests"
 cargo test --locked
+
+scripts/test-c-abi.sh
