@@ -3,3 +3,5 @@ pub mod mesh;
 pub mod solver;
 pub mod field;
 pub mod surfaces;
+pub mod curves;
+pub mod strips;
