@@ -207,7 +207,19 @@ impl<'a> StripOptimiser<'a> {
         self.iterate(params.iterations_per_round)?;
         self.refresh();
         self.problem.weights = StripWeights { fair: 0.0, ruling_anchor: 0.0, ..params.weights };
-        self.iterate(params.final_iterations)
+        self.iterate(params.final_iterations)?;
+        self.polish(params)
+    }
+
+    /// Holds the positions where they are (`slide` anchors at the current vertices, every other
+    /// term off but Eq. 16–17): a consistent system, since rulings alone can make every quad planar
+    /// for a fixed polyline (Sec. 3.4: successive reflection), on which Levenberg–Marquardt
+    /// converges fast to exact planarity and straightness.
+    fn polish(&mut self, params: &StripParams) -> Result<(), String> {
+        self.problem.frozen.anchors = self.positions();
+        let off = StripWeights { angle: 0.0, binormal: 0.0, surface: 0.0, slide: 0.0, fair: 0.0, planarity: 0.0, ruling_anchor: 0.0 };
+        self.problem.weights = StripWeights { slide: 1.0, planarity: params.weights.planarity, ..off };
+        self.iterate(params.polish_iterations)
     }
 
     /// Rulings from the version-1 model (averaged `L_i`, `L_{i+1}` in `R_i`) and quad normals

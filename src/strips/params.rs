@@ -25,7 +25,7 @@ pub struct StripWeights {
 
 impl Default for StripWeights {
     fn default() -> Self {
-        StripWeights { angle: 1.0, binormal: 1.0, surface: 1.0, slide: 1e-2, fair: 1e-3, planarity: 1.0, ruling_anchor: 1e-3 }
+        StripWeights { angle: 1.0, binormal: 1.0, surface: 1.0, slide: 1e-4, fair: 1e-4, planarity: 1.0, ruling_anchor: 1e-3 }
     }
 }
 
@@ -44,6 +44,9 @@ pub struct StripParams {
     pub iterations_per_round: usize,
     /// Iterations of the final rectifying-strip round (fairness and ruling anchor at weight 0).
     pub final_iterations: usize,
+    /// Iterations of the closing polish: positions held, rulings and quad normals solved for
+    /// exact planarity (Eq. 16–17 only).
+    pub polish_iterations: usize,
 }
 
 impl StripParams {
@@ -53,9 +56,10 @@ impl StripParams {
             theta_degrees,
             width,
             weights: StripWeights::default(),
-            binormal_rounds: 4,
+            binormal_rounds: 8,
             iterations_per_round: 15,
             final_iterations: 60,
+            polish_iterations: 30,
         }
     }
 }

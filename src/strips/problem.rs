@@ -280,3 +280,37 @@ impl LeastSquaresProblem for StripProblem {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solver::check_block_jacobian;
+
+    #[test]
+    fn analytic_jacobians_match_central_differences() {
+        let n = 6;
+        let weights = StripWeights { angle: 2.0, binormal: 1.5, surface: 0.7, slide: 0.3, fair: 0.2, planarity: 1.3, ruling_anchor: 0.4 };
+        let mut problem = StripProblem::new(n, 60.0, 0.8, weights);
+        let wobble = |k: usize| ((k * 7919 % 1000) as f64 / 1000.0) - 0.5;
+        let mut x = vec![0.0; problem.variable_count()];
+        for (k, value) in x.iter_mut().enumerate() {
+            *value = wobble(k);
+        }
+        for i in 0..n {
+            let t = i as f64;
+            let p = Vec3::new(t, 0.3 * t * t, 0.1 * t * t * t) + Vec3::new(wobble(3 * i), wobble(3 * i + 1), wobble(3 * i + 2)) * 0.1;
+            x[position(i)..position(i) + 3].copy_from_slice(p.as_slice());
+        }
+        let unit = |k: usize| Vec3::new(wobble(k), wobble(k + 1), 1.0).normalize();
+        problem.frozen = Frozen {
+            normals: (0..n).map(|i| unit(10 * i)).collect(),
+            sides: (0..n).map(|i| unit(10 * i + 3)).collect(),
+            anchors: (0..n).map(|i| Vec3::new(i as f64, 0.1, 0.2)).collect(),
+            rulings: (0..n).map(|i| unit(10 * i + 6)).collect(),
+        };
+        for b in 0..problem.block_count() {
+            let error = check_block_jacobian(&problem, &x, b, 1e-6);
+            assert!(error < 1e-6, "block {b} ({:?}): {error}", problem.blocks[b]);
+        }
+    }
+}
