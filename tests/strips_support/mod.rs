@@ -1,6 +1,6 @@
 //! Shared helpers of the strip tests: the optimised 60° cylinder field, the analytic P-curves,
 //! and an unrolling of 3D strips that is independent of the library's own.
-#![allow(dead_code)]
+#![allow(dead_code, unused_imports)]
 
 #[path = "../field_support/mod.rs"]
 mod field_support;
