@@ -61,11 +61,14 @@ pub fn version_one_rulings(points: &[Vec3], reference: &[Vec3]) -> Vec<Option<Ve
 /// Initial rulings of the preferred strip (Sec. 3.4): in the rectifying plane `R_i`, the average of
 /// the unit directions of `L_i` and `L_{i+1}`; where only one exists, that one; where none exists,
 /// the binormal `reference[i]` projected into `R_i` (or kept as it is where `R_i` is undefined).
-/// Unit vectors oriented along `reference`.
+/// The two ends, which have no rectifying plane, copy their neighbour's ruling (so the end quads
+/// start planar). Unit vectors oriented along `reference`.
+/// `reference` must have one vector per point.
 pub fn initial_rulings(points: &[Vec3], reference: &[Vec3]) -> Vec<Vec3> {
     let lines = version_one_rulings(points, reference);
     let normals = principal_normals(points);
-    (0..points.len())
+    let n = points.len();
+    let mut rulings: Vec<Vec3> = (0..n)
         .map(|i| {
             let next = lines.get(i + 1).copied().flatten();
             let guess = match (lines[i], next) {
@@ -77,5 +80,10 @@ pub fn initial_rulings(points: &[Vec3], reference: &[Vec3]) -> Vec<Vec3> {
             let unit = in_plane.try_normalize(PARALLEL).unwrap_or(reference[i]);
             if unit.dot(&reference[i]) < 0.0 { -unit } else { unit }
         })
-        .collect()
+        .collect();
+    if n >= 3 {
+        rulings[0] = rulings[1];
+        rulings[n - 1] = rulings[n - 2];
+    }
+    rulings
 }
