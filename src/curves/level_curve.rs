@@ -54,7 +54,7 @@ impl LevelCurve {
             return Err(CurveError::InvalidSpacing { spacing });
         }
         let length = self.length();
-        if self.points.len() < 2 || !(length > 0.0) {
+        if self.points.len() < 2 || length.is_nan() || length <= 0.0 {
             return Ok(self.clone());
         }
         let minimum = if self.closed { 3 } else { 1 };

@@ -14,7 +14,7 @@ use super::metrics::{PatternMetrics, StripGeometry, StripMetrics};
 use super::params::{StripParams, StripWeights};
 use super::problem::{binormal, position, ruling, vec3, StripProblem};
 use super::strip::{RectifyingStrip, SkippedCurve, StripPattern};
-use super::surface_distance::SurfaceProjector;
+use super::surface_distance::{SurfacePoint, SurfaceProjector};
 use super::unrolling::unroll;
 use crate::curves::LevelCurve;
 use crate::mesh::{TriMesh, Vec3};
@@ -25,6 +25,11 @@ const MIN_SINE: f64 = 1e-6;
 
 /// Builds a rectifying strip on every curve (in parallel; the result does not depend on the
 /// number of threads). Curves that cannot carry a strip are listed in `skipped` with the reason.
+///
+/// Curves are expected to run along `∇F × n`, as [`crate::curves::extract_level_curves`] orients
+/// them: the signed angle (Eq. 8) then asks for the family θ of the field; a reversed curve is
+/// pulled towards the mirror family 180° − θ. Resample them first
+/// ([`LevelCurve::resampled`]) to the vertex spacing the strips should have.
 pub fn rectifying_strips(mesh: &TriMesh, curves: &[LevelCurve], params: &StripParams) -> Result<StripPattern, StripError> {
     validate(params)?;
     let projector = SurfaceProjector::new(mesh);
@@ -43,7 +48,7 @@ pub fn rectifying_strips(mesh: &TriMesh, curves: &[LevelCurve], params: &StripPa
             Err(warnings) => skipped.push(SkippedCurve { curve, warnings }),
         }
     }
-    let metrics = PatternMetrics::collect(strips.iter().map(|s| &s.metrics));
+    let metrics = PatternMetrics::from_strips(strips.iter().map(|s| &s.metrics));
     Ok(StripPattern { strips, skipped, metrics })
 }
 
@@ -107,8 +112,10 @@ fn build_strip(
     if points.windows(2).any(|w| (w[1] - w[0]).norm() <= 1e-12 * length) {
         return skip(warnings, StripWarning::TooFewPoints { points: distinct_points(&points) });
     }
-    let mut optimiser = StripOptimiser::new(projector, &points, params)
-        .map_err(|message| vec![StripWarning::SolverFailed { message }])?;
+    let mut optimiser = match StripOptimiser::new(projector, &points, params) {
+        Ok(optimiser) => optimiser,
+        Err(message) => return skip(warnings, StripWarning::SolverFailed { message }),
+    };
     if let Err(message) = optimiser.run(params) {
         return skip(warnings, StripWarning::SolverFailed { message });
     }
@@ -116,7 +123,7 @@ fn build_strip(
     if strip.is_finite() {
         Ok(strip)
     } else {
-        Err(vec![StripWarning::SolverFailed { message: "the optimisation produced non-finite values".into() }])
+        skip(strip.warnings, StripWarning::SolverFailed { message: "the optimisation produced non-finite values".into() })
     }
 }
 
@@ -271,7 +278,10 @@ impl<'a> StripOptimiser<'a> {
         }
         let offsets: Vec<Vec3> = unit_offsets.iter().map(|o| o * half).collect();
         let unrolling = unroll(&centre, &offsets);
-        let surface: Vec<_> = centre.iter().filter_map(|p| self.projector.project(p)).collect();
+        // A vertex that cannot be projected (never expected: LM keeps x finite) gets an infinite
+        // distance, which `is_finite` turns into a skip rather than a wrong metric.
+        let unprojected = |p: &Vec3| SurfacePoint { point: *p, normal: Vec3::z(), distance: f64::INFINITY };
+        let surface: Vec<SurfacePoint> = centre.iter().map(|p| self.projector.project(p).unwrap_or_else(|| unprojected(p))).collect();
         let normals: Vec<Vec3> = surface.iter().map(|s| s.normal).collect();
         let distances: Vec<f64> = surface.iter().map(|s| s.distance).collect();
         let geometry = StripGeometry { centre: &centre, rulings: &rulings, normals: &normals, distances: &distances, unrolling: &unrolling };

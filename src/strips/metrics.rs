@@ -40,7 +40,8 @@ pub struct PatternMetrics {
 }
 
 impl PatternMetrics {
-    pub fn collect<'a>(strips: impl Iterator<Item = &'a StripMetrics>) -> PatternMetrics {
+    /// Maxima (and the sum of `E_planar`) over the strips' metrics.
+    pub fn from_strips<'a>(strips: impl Iterator<Item = &'a StripMetrics>) -> PatternMetrics {
         strips.fold(PatternMetrics::default(), |m, s| PatternMetrics {
             strip_count: m.strip_count + 1,
             max_diff_theta_degrees: m.max_diff_theta_degrees.max(s.max_diff_theta_degrees),

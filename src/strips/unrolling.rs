@@ -67,7 +67,7 @@ pub fn unroll(centre: &[Vec3], offsets: &[Vec3]) -> Unrolling {
 /// Largest distance of 2D points from their principal (least-squares) line, divided by `length`
 /// (0 for fewer than 2 points or a zero length).
 pub fn straightness(points: &[[f64; 2]], length: f64) -> f64 {
-    if points.len() < 2 || !(length > 0.0) {
+    if points.len() < 2 || length.is_nan() || length <= 0.0 {
         return 0.0;
     }
     let n = points.len() as f64;
