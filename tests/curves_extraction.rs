@@ -148,6 +148,10 @@ fn bad_input_gets_typed_errors() {
     for spacing in [0.0, -1.0, f64::NAN] {
         assert!(matches!(curves[0].resampled(spacing), Err(CurveError::InvalidSpacing { .. })));
     }
+    let mut inconsistent = curves[0].clone();
+    inconsistent.normals.pop();
+    let (points, normals) = (inconsistent.points.len(), inconsistent.normals.len());
+    assert_eq!(inconsistent.resampled(0.1), Err(CurveError::NormalCount { points, normals }));
 }
 
 #[test]

@@ -19,6 +19,8 @@ pub enum CurveError {
     LevelOutOfRange { level: f64, min: f64, max: f64 },
     /// A resampling spacing that is not finite and positive.
     InvalidSpacing { spacing: f64 },
+    /// A curve whose number of normals differs from its number of points.
+    NormalCount { points: usize, normals: usize },
 }
 
 impl fmt::Display for CurveError {
@@ -35,6 +37,7 @@ impl fmt::Display for CurveError {
                 write!(f, "level {level} lies outside the field's range [{min}, {max}]")
             }
             CurveError::InvalidSpacing { spacing } => write!(f, "spacing must be finite and > 0, got {spacing}"),
+            CurveError::NormalCount { points, normals } => write!(f, "curve has {points} points but {normals} normals"),
         }
     }
 }

@@ -31,7 +31,7 @@ impl LevelCurve {
         }
     }
 
-    /// The `k`-th segment's end points.
+    /// The `k`-th segment's end points and normals (needs as many normals as points).
     fn segment(&self, k: usize) -> (Vec3, Vec3, Vec3, Vec3) {
         let next = (k + 1) % self.points.len();
         (self.points[k], self.points[next], self.normals[k], self.normals[next])
@@ -39,10 +39,8 @@ impl LevelCurve {
 
     /// Total length (including the closing segment of a closed curve).
     pub fn length(&self) -> f64 {
-        (0..self.segment_count()).map(|k| {
-            let (a, b, _, _) = self.segment(k);
-            (b - a).norm()
-        }).sum()
+        let n = self.points.len();
+        (0..self.segment_count()).map(|k| (self.points[(k + 1) % n] - self.points[k]).norm()).sum()
     }
 
     /// The curve resampled at equal arc-length steps as close to `spacing` as the length allows:
@@ -52,6 +50,9 @@ impl LevelCurve {
     pub fn resampled(&self, spacing: f64) -> Result<LevelCurve, CurveError> {
         if !(spacing.is_finite() && spacing > 0.0) {
             return Err(CurveError::InvalidSpacing { spacing });
+        }
+        if self.normals.len() != self.points.len() {
+            return Err(CurveError::NormalCount { points: self.points.len(), normals: self.normals.len() });
         }
         let length = self.length();
         if self.points.len() < 2 || length.is_nan() || length <= 0.0 {

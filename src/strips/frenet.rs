@@ -63,8 +63,9 @@ pub fn version_one_rulings(points: &[Vec3], reference: &[Vec3]) -> Vec<Option<Ve
 /// the binormal `reference[i]` projected into `R_i` (or kept as it is where `R_i` is undefined).
 /// The two ends, which have no rectifying plane, copy their neighbour's ruling (so the end quads
 /// start planar). Unit vectors oriented along `reference`.
-/// `reference` must have one vector per point.
+/// One ruling per point that has a reference vector (`min(points.len(), reference.len())`).
 pub fn initial_rulings(points: &[Vec3], reference: &[Vec3]) -> Vec<Vec3> {
+    let points = &points[..points.len().min(reference.len())];
     let lines = version_one_rulings(points, reference);
     let normals = principal_normals(points);
     let n = points.len();
