@@ -75,7 +75,7 @@ fn bad_curves_are_skipped_with_a_reason() {
     assert_eq!(reasons[0], (1, &[StripWarning::TooFewPoints { points: 2 }][..]));
     assert_eq!(reasons[1], (2, &[StripWarning::TooFewPoints { points: 0 }][..]));
     assert_eq!(reasons[2], (3, &[StripWarning::NonFiniteInput][..]));
-    assert_eq!(reasons[3], (4, &[StripWarning::TooFewPoints { points: 14 }][..]));
+    assert_eq!(reasons[3], (4, &[StripWarning::ZeroLengthSegment { segment: 4 }][..]));
     assert_eq!(pattern.metrics.strip_count, 1);
 }
 

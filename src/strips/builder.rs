@@ -109,8 +109,8 @@ fn build_strip(
         return skip(warnings, StripWarning::NonFiniteInput);
     }
     let length: f64 = points.windows(2).map(|w| (w[1] - w[0]).norm()).sum();
-    if points.windows(2).any(|w| (w[1] - w[0]).norm() <= 1e-12 * length) {
-        return skip(warnings, StripWarning::TooFewPoints { points: distinct_points(&points) });
+    if let Some(segment) = points.windows(2).position(|w| (w[1] - w[0]).norm() <= 1e-12 * length) {
+        return skip(warnings, StripWarning::ZeroLengthSegment { segment });
     }
     let mut optimiser = match StripOptimiser::new(projector, &points, params) {
         Ok(optimiser) => optimiser,
@@ -125,10 +125,6 @@ fn build_strip(
     } else {
         skip(strip.warnings, StripWarning::SolverFailed { message: "the optimisation produced non-finite values".into() })
     }
-}
-
-fn distinct_points(points: &[Vec3]) -> usize {
-    1 + points.windows(2).filter(|w| w[1] != w[0]).count()
 }
 
 /// The optimisation state of one strip.

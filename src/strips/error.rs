@@ -33,8 +33,11 @@ impl std::error::Error for StripError {}
 pub enum StripWarning {
     /// The polyline has fewer than 3 points: no binormal, no strip (skipped).
     TooFewPoints { points: usize },
-    /// A point or normal of the polyline is not finite (skipped).
+    /// A point of the polyline is not finite (skipped).
     NonFiniteInput,
+    /// Segment `segment` (from point `segment` to the next) has (nearly) zero length, so its
+    /// direction and the discrete frame (Eq. 1) are undefined (skipped; resample the curve).
+    ZeroLengthSegment { segment: usize },
     /// The optimisation failed (skipped); the message says why.
     SolverFailed { message: String },
     /// The level curve passes the star of these singular field vertices: the level set may branch
@@ -54,7 +57,8 @@ impl fmt::Display for StripWarning {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             StripWarning::TooFewPoints { points } => write!(f, "polyline has {points} points, at least 3 are needed"),
-            StripWarning::NonFiniteInput => write!(f, "polyline has non-finite points or normals"),
+            StripWarning::NonFiniteInput => write!(f, "polyline has non-finite points"),
+            StripWarning::ZeroLengthSegment { segment } => write!(f, "segment {segment} of the polyline has zero length"),
             StripWarning::SolverFailed { message } => write!(f, "strip optimisation failed: {message}"),
             StripWarning::SingularVertices { vertices } => {
                 write!(f, "level curve passes {} singular field vertices: {vertices:?}", vertices.len())
