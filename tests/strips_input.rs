@@ -60,23 +60,29 @@ fn bad_curves_are_skipped_with_a_reason() {
     nan[4].y = f64::NAN;
     let mut repeated = arc();
     repeated[5] = repeated[4];
+    let straight: Vec<Vec3> = (0..10).map(|k| Vec3::new(-2.0 + 0.4 * k as f64, 1.0, 0.0)).collect();
     let curves = [
         curve(arc()),
         curve(vec![Vec3::zeros(), Vec3::x()]),
         curve(Vec::new()),
         curve(nan),
         curve(repeated),
+        curve(straight),
     ];
     let pattern = rectifying_strips(&mesh, &curves, &StripParams::new(0.0, 0.3)).expect("valid parameters");
-    assert_eq!(pattern.strips.len(), 1);
-    assert_eq!(pattern.strips[0].curve, 0);
-    assert!(finite(&pattern.strips[0]));
+    assert_eq!(pattern.strips.len(), 2);
+    assert_eq!((pattern.strips[0].curve, pattern.strips[1].curve), (0, 5));
+    assert!(pattern.strips.iter().all(finite));
+    // A straight polyline has no principal normals (Eq. 1): its strip keeps the binormal rulings
+    // and is planar and straight all the same.
+    let line = &pattern.strips[1];
+    assert!(line.metrics.max_planar <= 1e-9 && line.metrics.e_straight <= 1e-9, "{:?}", line.metrics);
     let reasons: Vec<(usize, &[StripWarning])> = pattern.skipped.iter().map(|s| (s.curve, s.warnings.as_slice())).collect();
     assert_eq!(reasons[0], (1, &[StripWarning::TooFewPoints { points: 2 }][..]));
     assert_eq!(reasons[1], (2, &[StripWarning::TooFewPoints { points: 0 }][..]));
     assert_eq!(reasons[2], (3, &[StripWarning::NonFiniteInput][..]));
     assert_eq!(reasons[3], (4, &[StripWarning::ZeroLengthSegment { segment: 4 }][..]));
-    assert_eq!(pattern.metrics.strip_count, 1);
+    assert_eq!(pattern.metrics.strip_count, 2);
 }
 
 #[test]
