@@ -1,0 +1,24 @@
+//! Rectifying developable strips along level curves (paper Sec. 2.1, 3.4, Fig. 18–20, Table 4):
+//! binormal-strip optimisation of each polyline (Eq. 8–10 on polyline vertices), discrete
+//! rectifying developables (version 1, Fig. 19, and the preferred strip of planar quads, Fig. 20,
+//! Eq. 16–17, solved with the crate's Levenberg–Marquardt), flat unrollings and the quality measures
+//! of Table 4.
+
+mod builder;
+mod error;
+mod frenet;
+mod metrics;
+mod params;
+mod problem;
+mod strip;
+mod surface_distance;
+mod unrolling;
+
+pub use builder::rectifying_strips;
+pub use error::{StripError, StripWarning};
+pub use frenet::{discrete_binormals, initial_rulings, principal_normals, unit_edges, version_one_rulings};
+pub use metrics::{PatternMetrics, StripMetrics};
+pub use params::{StripParams, StripWeights};
+pub use strip::{RectifyingStrip, SkippedCurve, StripPattern};
+pub use surface_distance::{SurfacePoint, SurfaceProjector};
+pub use unrolling::{straightness, unroll, Unrolling};
