@@ -16,6 +16,16 @@ fn solve(mesh: &TriMesh, family: Family) -> (FieldSolver, StepReport) {
     (solver, report)
 }
 
+#[test]
+fn sixty_degree_family_reaches_the_papers_accuracy() {
+    let mesh = cylinder(1500, 7);
+    let (_, report) = solve(&mesh, Family::PseudoGeodesic { theta_degrees: 60.0 });
+    assert!(report.energies.angle <= 1e-5, "E_angle = {}", report.energies.angle);
+    assert!(report.angle_error_max_degrees <= 0.5, "max angle error {}°", report.angle_error_max_degrees);
+    assert!(report.singular_vertices.is_empty(), "singular vertices {:?}", report.singular_vertices);
+    assert!(report.measured_vertices > 1200, "angle measured at only {} vertices", report.measured_vertices);
+}
+
 /// Splits the developed points of one level set into its connected pieces (gaps along `s`).
 fn pieces(mut points: Vec<(f64, f64)>, gap: f64) -> Vec<Vec<(f64, f64)>> {
     points.sort_by(|a, b| a.0.total_cmp(&b.0));
