@@ -1,5 +1,6 @@
-//! Rectifying strips on the doubly curved hall roof (dome-like in the middle, saddle-like towards
-//! the gable ends): every strip made of planar quads, unrolled straight, no flipped quads.
+//! Rectifying strips on doubly curved roofs — the vault z = h(1 − (x/a)²)(1 − (y/b)²) and the hall
+//! roof (dome-like in the middle, saddle-like towards the gable ends): every strip made of planar
+//! quads, unrolled straight, no flipped quads.
 
 mod strips_support;
 
@@ -7,7 +8,7 @@ use lamella::curves::{extract_level_curves, uniform_levels, LevelCurve};
 use lamella::field::{FieldParams, FieldSolver};
 use lamella::mesh::{TriMesh, Vec3};
 use lamella::strips::{rectifying_strips, StripParams};
-use lamella::surfaces::hall_roof;
+use lamella::surfaces::{hall_roof, vault, Vault};
 use strips_support::unroll_quad_by_quad;
 
 const THETA: f64 = 60.0;
@@ -23,8 +24,19 @@ fn nearest_vertex_normal(mesh: &TriMesh, p: &Vec3) -> Vec3 {
 
 #[test]
 fn vault_strips_are_planar_straight_and_consistently_oriented() {
-    let mesh = hall_roof(3000).into_mesh().expect("valid mesh");
-    // Level sets start as the arches x = const and are optimised into 60° pseudo-geodesics.
+    let surface = Vault { half_length: 10.0, half_width: 7.0, rise: 4.0, target_vertices: 2000, irregularity: 0.25, seed: 5 };
+    // The issue asks planar, straight and unflipped here; the angle bound is the CLI's 2°.
+    assert_fabricable_pattern(&vault(&surface).expect("valid vault").into_mesh().expect("valid mesh"), "vault", 2.0);
+}
+
+#[test]
+fn hall_roof_strips_are_planar_straight_and_consistently_oriented() {
+    assert_fabricable_pattern(&hall_roof(3000).into_mesh().expect("valid mesh"), "hall roof", 1.5);
+}
+
+fn assert_fabricable_pattern(mesh: &TriMesh, name: &str, max_diff_theta: f64) {
+    let mesh = mesh.clone();
+    // Level sets start as the sections x = const and are optimised into 60° pseudo-geodesics.
     let initial: Vec<f64> = mesh.positions().iter().map(|p| p.x).collect();
     let mut solver = FieldSolver::new(&mesh, &initial, FieldParams::pseudo_geodesic(THETA)).expect("valid input");
     let report = solver.step(300).expect("solver runs");
@@ -40,11 +52,11 @@ fn vault_strips_are_planar_straight_and_consistently_oriented() {
     let pattern = rectifying_strips(&mesh, &curves, &StripParams::new(THETA, WIDTH)).expect("valid parameters");
     assert!(pattern.skipped.is_empty(), "skipped {:?}", pattern.skipped);
     let m = pattern.metrics;
-    eprintln!("hall roof Table 4: {m:?}");
+    eprintln!("{name} Table 4: {m:?}");
     assert_eq!(m.strip_count, 10);
     assert!(m.max_planar <= 1e-6, "max planarity residual {}", m.max_planar);
     assert!(m.max_e_straight <= 1e-3, "max e_straight {}", m.max_e_straight);
-    assert!(m.max_diff_theta_degrees <= 1.5, "max diff θ {}°", m.max_diff_theta_degrees);
+    assert!(m.max_diff_theta_degrees <= max_diff_theta, "max diff θ {}°", m.max_diff_theta_degrees);
     assert!(m.appro_percent <= 0.1, "Appro {} %", m.appro_percent);
     assert_eq!(m.flipped_quads, 0);
     for strip in &pattern.strips {

@@ -13,12 +13,14 @@ mod hyperbolic_paraboloid;
 mod jittered_grid;
 mod planar_disk;
 mod random;
+mod vault;
 
 pub use cylinder_patch::{cylinder_patch, CylinderPatch};
 pub use hall_roof::{hall_roof, HallRoofSection};
 pub use hyperbolic_paraboloid::{hyperbolic_paraboloid, HyperbolicParaboloid};
 pub use planar_disk::{planar_disk, PlanarPatch};
 pub use random::SplitMix64;
+pub use vault::{vault, Vault};
 
 use crate::mesh::{MeshError, TriMesh, Vec3};
 
