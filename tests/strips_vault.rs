@@ -12,7 +12,6 @@ use lamella::surfaces::{hall_roof, vault, Vault};
 use strips_support::unroll_quad_by_quad;
 
 const THETA: f64 = 60.0;
-const WIDTH: f64 = 0.6;
 
 /// Unit normal of the mesh vertex nearest to `p` (a coarse, independent surface normal).
 fn nearest_vertex_normal(mesh: &TriMesh, p: &Vec3) -> Vec3 {
@@ -26,15 +25,16 @@ fn nearest_vertex_normal(mesh: &TriMesh, p: &Vec3) -> Vec3 {
 fn vault_strips_are_planar_straight_and_consistently_oriented() {
     let surface = Vault { half_length: 10.0, half_width: 7.0, rise: 4.0, target_vertices: 2000, irregularity: 0.25, seed: 5 };
     // The issue asks planar, straight and unflipped here; the angle bound is the CLI's 2°.
-    assert_fabricable_pattern(&vault(&surface).expect("valid vault").into_mesh().expect("valid mesh"), "vault", 2.0);
+    assert_fabricable_pattern(&vault(&surface).expect("valid vault").into_mesh().expect("valid mesh"), "vault", 2.0, 0.2);
 }
 
 #[test]
 fn hall_roof_strips_are_planar_straight_and_consistently_oriented() {
-    assert_fabricable_pattern(&hall_roof(3000).into_mesh().expect("valid mesh"), "hall roof", 1.5);
+    assert_fabricable_pattern(&hall_roof(3000).into_mesh().expect("valid mesh"), "hall roof", 1.5, 0.6);
 }
 
-fn assert_fabricable_pattern(mesh: &TriMesh, name: &str, max_diff_theta: f64) {
+/// `width` must stay below where neighbouring rulings cross (the strips' own warning says where).
+fn assert_fabricable_pattern(mesh: &TriMesh, name: &str, max_diff_theta: f64, width: f64) {
     let mesh = mesh.clone();
     // Level sets start as the sections x = const and are optimised into 60° pseudo-geodesics.
     let initial: Vec<f64> = mesh.positions().iter().map(|p| p.x).collect();
@@ -49,7 +49,7 @@ fn assert_fabricable_pattern(mesh: &TriMesh, name: &str, max_diff_theta: f64) {
         .map(|c| c.resampled(mesh.mean_edge_length()).expect("valid spacing"))
         .collect();
     assert_eq!(curves.len(), 10, "one arch-crossing curve per level");
-    let pattern = rectifying_strips(&mesh, &curves, &StripParams::new(THETA, WIDTH)).expect("valid parameters");
+    let pattern = rectifying_strips(&mesh, &curves, &StripParams::new(THETA, width)).expect("valid parameters");
     assert!(pattern.skipped.is_empty(), "skipped {:?}", pattern.skipped);
     let m = pattern.metrics;
     eprintln!("{name} Table 4: {m:?}");
