@@ -2,7 +2,6 @@
 //! from the field itself rather than from the solver's auxiliary variables: the independent
 //! yardstick for how well a field meets its target angle.
 
-use super::crossing::find_level_crossing;
 use super::star_chords::StarChords;
 use crate::mesh::{TriMesh, Vec3};
 
@@ -35,8 +34,7 @@ impl LevelFrame {
 
 /// The level frame at vertex `v`; `None` at boundary and singular vertices.
 pub fn level_frame(mesh: &TriMesh, field: &[f64], v: usize) -> Option<LevelFrame> {
-    let crossing = find_level_crossing(mesh, field, v)?;
-    let chords = StarChords::new(mesh, field, v, &crossing)?;
+    let chords = StarChords::at_vertex(mesh, field, v)?;
     let normal = mesh.vertex_normals()[v];
     let tangent = chords.tangent.unit();
     let side = normal.cross(&tangent).try_normalize(0.0)?;

@@ -4,8 +4,7 @@
 //! One row per regular interior vertex, scaled by `√(λ_angle · A_v)`:
 //! `det(n, e_p, e_q) / (‖e_p‖ ‖e_q‖) = n · (ê_p × ê_q)`.
 
-use super::crossing::find_level_crossing;
-use super::star_chords::StarChords;
+use super::star_chords::clear_rows_at_vertex;
 use crate::mesh::TriMesh;
 
 /// Residual rows per interior vertex.
@@ -13,13 +12,8 @@ pub(crate) const ROWS: usize = 1;
 
 /// Evaluates the row of vertex `v`; `jacobian` (if any) has one column per star vertex
 /// (centre first, then the ring).
-pub(crate) fn evaluate(mesh: &TriMesh, field: &[f64], v: usize, scale: f64, residuals: &mut [f64], jacobian: Option<&mut [f64]>) {
-    residuals.fill(0.0);
-    let jacobian = jacobian.map(|j| {
-        j.fill(0.0);
-        j
-    });
-    let Some(chords) = find_level_crossing(mesh, field, v).and_then(|c| StarChords::new(mesh, field, v, &c)) else {
+pub(crate) fn evaluate(mesh: &TriMesh, field: &[f64], v: usize, scale: f64, residuals: &mut [f64], mut jacobian: Option<&mut [f64]>) {
+    let Some(chords) = clear_rows_at_vertex(mesh, field, v, residuals, &mut jacobian) else {
         return;
     };
     let n = mesh.vertex_normals()[v];

@@ -7,7 +7,7 @@
 //! Field columns are local to the star: column 0 is the centre `v0`, column `1 + k`
 //! its `k`-th ring neighbour.
 
-use super::crossing::{EdgeCrossing, LevelCrossing};
+use super::crossing::{find_level_crossing, EdgeCrossing, LevelCrossing};
 use crate::mesh::{TriMesh, Vec3};
 
 /// Most field columns a chord depends on: the centre and the two ends of both crossed edges.
@@ -79,6 +79,12 @@ pub(crate) struct StarChords {
 const DEGENERATE_CHORD: f64 = 1e-9;
 
 impl StarChords {
+    /// The chords of vertex `v`; `None` at boundary and singular vertices (Fig. 7) and where a
+    /// chord degenerates.
+    pub fn at_vertex(mesh: &TriMesh, field: &[f64], v: usize) -> Option<Self> {
+        StarChords::new(mesh, field, v, &find_level_crossing(mesh, field, v)?)
+    }
+
     /// Builds the chords of vertex `v` for a known crossing; `None` when a chord degenerates.
     pub fn new(mesh: &TriMesh, field: &[f64], v: usize, crossing: &LevelCrossing) -> Option<Self> {
         let v0 = FieldVector::constant(mesh.positions()[v]);
@@ -104,4 +110,20 @@ fn crossing_point(mesh: &TriMesh, field: &[f64], ring_len: usize, c: &EdgeCrossi
     point.push(col_a, edge * (-(1.0 - c.t) / denominator));
     point.push(col_b, edge * (-c.t / denominator));
     point
+}
+
+/// Zeroes a block's residuals and Jacobian (singular vertices keep zero rows) and returns the
+/// chords of vertex `v`, if it is regular.
+pub(crate) fn clear_rows_at_vertex(
+    mesh: &TriMesh,
+    field: &[f64],
+    v: usize,
+    residuals: &mut [f64],
+    jacobian: &mut Option<&mut [f64]>,
+) -> Option<StarChords> {
+    residuals.fill(0.0);
+    if let Some(j) = jacobian.as_deref_mut() {
+        j.fill(0.0);
+    }
+    StarChords::at_vertex(mesh, field, v)
 }
