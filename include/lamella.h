@@ -125,6 +125,13 @@ typedef struct LmlMesh LmlMesh;
 // A strip pattern (opaque): one rectifying strip per level curve that could carry one, with
 // its flat unrolling and metrics, and the curves that were skipped. Create it with
 // `lml_strips_new`, release it with `lml_strips_free`. Immutable once created.
+//
+// Layout of the arrays: the strips come one after another, in curve order. A strip with `n`
+// centre points has `n` entries in the per-point arrays (centres, rulings, unrolled centres),
+// `2n` vertices (first its boundary on the rulings' side, `left_0 … left_{n−1}`, then the
+// other, `right_0 … right_{n−1}`) in `lml_strips_vertices` and `lml_strips_unrolled_vertices`
+// alike, and `n − 1` quads `(left_j, left_{j+1}, right_{j+1}, right_j)` whose indices address
+// both vertex arrays. Three offset tables (points, vertices, quads) cut the arrays per strip.
 typedef struct LmlStrips LmlStrips;
 
 // The curve family the level sets of a field should form (one of the `LML_FAMILY_*` constants).
@@ -720,8 +727,9 @@ LmlStatus lml_strips_quad_offsets(const struct LmlStrips *strips,
                                   size_t *needed);
 
 // Copies the strip vertices in space: `3v` doubles (`v` = total vertex count), each strip's
-// `2n` vertices as described in the layout above (`left`: centre + s·ruling, `right`:
-// centre − s·ruling, s chosen so that the flat strip has the requested width).
+// `2n` vertices in the order described at `LmlStrips` (`left_i` = centre_i + s_i ruling_i,
+// `right_i` = centre_i − s_i ruling_i, with s_i chosen so that the flat strip has the
+// requested width).
 //
 // Two-call pattern as `lml_strips_point_offsets` (`capacity` and `*needed` count doubles).
 // Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.

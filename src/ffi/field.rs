@@ -210,16 +210,3 @@ pub unsafe extern "C" fn lml_field_singular_vertices(field: *const LmlField, out
         unsafe { copy_out(&field.solver.report().singular_vertices, out, capacity, needed, "out") }
     })
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The header promises that handles may move between threads (one thread at a time).
-    #[test]
-    fn handles_may_move_between_threads() {
-        fn movable<T: Send>() {}
-        movable::<LmlMesh>();
-        movable::<LmlField>();
-    }
-}

@@ -52,3 +52,18 @@ pub use strip_metrics::*;
 pub use strip_params::*;
 pub use strips::*;
 pub use version::*;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The header promises that handles may move between threads (one thread at a time).
+    #[test]
+    fn handles_may_move_between_threads() {
+        fn movable<T: Send>() {}
+        movable::<LmlMesh>();
+        movable::<LmlField>();
+        movable::<LmlCurves>();
+        movable::<LmlStrips>();
+    }
+}

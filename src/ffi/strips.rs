@@ -1,10 +1,5 @@
 //! `LmlStrips`: rectifying developable strips of planar quads along level curves (paper
 //! Sec. 3.4, Fig. 20, Eq. 16–17), their flat unrollings and the measures of Table 4.
-//!
-//! Layouts: strip `s` with `n` centre points has `2n` vertices (its boundary on the rulings'
-//! side, `left_0 … left_{n−1}`, then the other, `right_0 … right_{n−1}`) and `n − 1` quads
-//! `(left_j, left_{j+1}, right_{j+1}, right_j)`; the unrolled vertices follow the same order,
-//! so the quads index both.
 
 use super::curves::LmlCurves;
 use super::failure::Failure;
@@ -19,6 +14,13 @@ use crate::strips::{rectifying_strips, RectifyingStrip, StripPattern};
 /// A strip pattern (opaque): one rectifying strip per level curve that could carry one, with
 /// its flat unrolling and metrics, and the curves that were skipped. Create it with
 /// `lml_strips_new`, release it with `lml_strips_free`. Immutable once created.
+///
+/// Layout of the arrays: the strips come one after another, in curve order. A strip with `n`
+/// centre points has `n` entries in the per-point arrays (centres, rulings, unrolled centres),
+/// `2n` vertices (first its boundary on the rulings' side, `left_0 … left_{n−1}`, then the
+/// other, `right_0 … right_{n−1}`) in `lml_strips_vertices` and `lml_strips_unrolled_vertices`
+/// alike, and `n − 1` quads `(left_j, left_{j+1}, right_{j+1}, right_j)` whose indices address
+/// both vertex arrays. Three offset tables (points, vertices, quads) cut the arrays per strip.
 pub struct LmlStrips {
     pub(crate) pattern: StripPattern,
 }
@@ -131,8 +133,9 @@ fn quad_count(strip: &RectifyingStrip) -> usize {
 }
 
 /// Copies the strip vertices in space: `3v` doubles (`v` = total vertex count), each strip's
-/// `2n` vertices as described in the layout above (`left`: centre + s·ruling, `right`:
-/// centre − s·ruling, s chosen so that the flat strip has the requested width).
+/// `2n` vertices in the order described at `LmlStrips` (`left_i` = centre_i + s_i ruling_i,
+/// `right_i` = centre_i − s_i ruling_i, with s_i chosen so that the flat strip has the
+/// requested width).
 ///
 /// Two-call pattern as `lml_strips_point_offsets` (`capacity` and `*needed` count doubles).
 /// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
