@@ -2,10 +2,19 @@
  * lamella.h: the C ABI of Lamella, rectifying strip patterns (Wang, Wang, Schling,
  * Pottmann, "Rectifying Strip Patterns", SIGGRAPH Asia 2023).
  *
- * What it covers today: triangle meshes (LmlMesh) and field solver sessions (LmlField),
- * i.e. designing a scalar field whose level curves form a pseudo-geodesic, geodesic or
- * asymptotic family. Level curves (LmlCurves) and developable strips (LmlStrips) will be
- * added in the same style in a later ABI version.
+ * What it covers: the whole pipeline of the paper, one handle per stage.
+ *   LmlMesh    a triangle mesh (a topological disk, possibly with holes);
+ *   LmlField   a field solver session: a scalar field whose level curves form a
+ *              pseudo-geodesic, geodesic or asymptotic family, stepped until converged,
+ *              saved and restored;
+ *   LmlCurves  level curves of a field: polylines (points + offsets), level values,
+ *              normals, closed flags;
+ *   LmlStrips  rectifying developable strips along the curves: planar quads (vertices +
+ *              quad indices + per-strip offsets), centre lines, rulings, flat unrollings,
+ *              per-strip and overall quality measures (paper Table 4) and warning flags.
+ * A typical run: lml_mesh_new -> lml_field_new -> lml_field_step until
+ * LML_STATUS_CONVERGED -> lml_curves_new_uniform -> lml_strips_new -> read the arrays ->
+ * free the handles (in any order: no handle depends on another being alive).
  *
  * Conventions
  * - Names: functions lml_*, types Lml*, constants LML_*. Plain C99; includable from C++
@@ -22,8 +31,10 @@
  *   really points at as many elements as stated, and that a handle is live (not freed).
  * - Out-parameters are written only; handle out-parameters are set to NULL on failure.
  * - Arrays are flat: vertices double[3n] (x0 y0 z0 x1 y1 z1 ...), triangles uint32_t[3m]
- *   (zero-based vertex indices), per-vertex values double[n]. Counts are element counts
- *   (not bytes) unless stated otherwise.
+ *   and quads uint32_t[4q] (zero-based vertex indices), per-vertex values double[n], plane
+ *   points double[2n]. Items of varying length (polylines, strips) are concatenated and cut
+ *   by an offset table size_t[count + 1] starting at 0: item i spans offsets[i] ..
+ *   offsets[i + 1]. Counts are element counts (not bytes) unless stated otherwise.
  * - Outputs use the two-call pattern: call with out = NULL (or a buffer) and read
  *   *needed; on LML_STATUS_BUFFER_TOO_SMALL allocate *needed elements and call again.
  *   Buffers are caller-owned (C# may pin managed arrays); the library keeps no pointer
@@ -97,6 +108,11 @@ typedef int32_t LmlStatus;
 #endif // __STDC_VERSION__ >= 202311L
 #endif // __cplusplus
 
+// Level polylines of a field (opaque), each with its level value, per-point surface normals and
+// a closed flag, together with the surface they lie on. Create it with `lml_curves_new` or
+// `lml_curves_new_uniform`, release it with `lml_curves_free`. Immutable once created.
+typedef struct LmlCurves LmlCurves;
+
 // A field optimisation session (opaque): a copy of the mesh, the scalar field, the auxiliary
 // variables and the solver state. Create it with `lml_field_new` or `lml_field_load`, release
 // it with `lml_field_free`.
@@ -105,6 +121,18 @@ typedef struct LmlField LmlField;
 // A validated triangle mesh (opaque). Create it with `lml_mesh_new` or `lml_mesh_read_obj`,
 // release it with `lml_mesh_free`. Immutable once created.
 typedef struct LmlMesh LmlMesh;
+
+// A strip pattern (opaque): one rectifying strip per level curve that could carry one, with
+// its flat unrolling and metrics, and the curves that were skipped. Create it with
+// `lml_strips_new`, release it with `lml_strips_free`. Immutable once created.
+//
+// Layout of the arrays: the strips come one after another, in curve order. A strip with `n`
+// centre points has `n` entries in the per-point arrays (centres, rulings, unrolled centres),
+// `2n` vertices (first its boundary on the rulings' side, `left_0 … left_{n−1}`, then the
+// other, `right_0 … right_{n−1}`) in `lml_strips_vertices` and `lml_strips_unrolled_vertices`
+// alike, and `n − 1` quads `(left_j, left_{j+1}, right_{j+1}, right_j)` whose indices address
+// both vertex arrays. Three offset tables (points, vertices, quads) cut the arrays per strip.
+typedef struct LmlStrips LmlStrips;
 
 // The curve family the level sets of a field should form (one of the `LML_FAMILY_*` constants).
 typedef uint32_t LmlFamily;
@@ -178,6 +206,101 @@ typedef struct LmlReport {
   uint64_t converged;
 } LmlReport;
 
+// The weights λ of the strip energies (paper Sec. 3.4), each finite and ≥ 0 (`planarity` > 0);
+// each residual is multiplied by √λ. Lengths inside them are in units of a polyline's mean
+// edge length, so the defaults suit any scale.
+typedef struct LmlStripWeights {
+  // Eq. 8 on polyline vertices: the binormal keeps the angle θ to the surface normal.
+  double angle;
+  // Eq. 9 on polyline vertices: the binormal is a unit vector orthogonal to both edges.
+  double binormal;
+  // Distance of the polyline vertices from the surface.
+  double surface;
+  // Tangential drift of the vertices along the surface.
+  double slide;
+  // Fairness `c_{i−1} − 2c_i + c_{i+1}` (binormal stage and first rectifying round only).
+  double fair;
+  // Eq. 16–17: rulings in the outer bisecting planes, planar quads.
+  double planarity;
+  // Proximity of the rulings to their initial guess (first rectifying round only).
+  double ruling_anchor;
+} LmlStripWeights;
+
+// Parameters of a strip computation. Fill it with `lml_strip_params_default`, then change
+// fields as needed. Lengths are in the mesh's unit, angles in degrees. (No padding: the four
+// 32-bit fields come first.)
+typedef struct LmlStripParams {
+  // Binormal-strip stage: rounds of (project onto the surface, optimise). Default 8.
+  uint32_t binormal_rounds;
+  // Levenberg–Marquardt iterations per binormal round and in the first rectifying round. Default 15.
+  uint32_t iterations_per_round;
+  // Iterations of the final rectifying round. Default 60.
+  uint32_t final_iterations;
+  // Iterations of the closing polish (positions held, rulings solved for planar quads). Default 30.
+  uint32_t polish_iterations;
+  // Target angle θ between binormal and surface normal, in [0, 180]: the θ of the field the
+  // curves come from.
+  double theta_degrees;
+  // Width of the flat strip (distance between its two straight boundaries), finite and > 0.
+  double width;
+  struct LmlStripWeights weights;
+} LmlStripParams;
+
+// A set of `LML_STRIP_WARNING_*` bits.
+typedef uint64_t LmlStripWarnings;
+
+// One strip: which curve it was built on and its Table 4 measures. Lengths are in the mesh's
+// unit, angles in degrees. (All fields are 64 bits: no padding.)
+typedef struct LmlStripMetrics {
+  // Index (into the `LmlCurves` the strips were built from) of the strip's level curve.
+  uint64_t curve;
+  // Level value of that curve.
+  double level;
+  // Length of the strip's centre line (the same in space and unrolled).
+  double length;
+  // diff_θ: max over the inner centre points of |θ_measured − θ|, the angle between the
+  // discrete binormal (paper Eq. 1) and the surface normal at the closest surface point.
+  double max_diff_theta_degrees;
+  // e_straight: max distance of the unrolled centre points from their least-squares line,
+  // divided by `length`.
+  double e_straight;
+  // E_planar: Σ det(d̂_j, d̂_{j+1}, ê_j)² over the quads (unit rulings d, unit edges e).
+  double e_planar;
+  // max |det(d̂_j, d̂_{j+1}, ê_j)|: the largest planarity residual of one quad.
+  double max_planar;
+  // Appro: max distance of the centre points from the surface, in % of the surface's
+  // bounding-box diagonal.
+  double appro_percent;
+  // Quads whose orientation flips.
+  uint64_t flipped_quads;
+  // The strip's `LML_STRIP_WARNING_*` bits (0: none).
+  LmlStripWarnings warnings;
+} LmlStripMetrics;
+
+// Table 4 over a whole pattern: maxima over its strips, and the sum of E_planar.
+typedef struct LmlPatternMetrics {
+  // |Strip|: the number of strips built.
+  uint64_t strip_count;
+  // Curves no strip could be built on (listed by `lml_strips_skipped`).
+  uint64_t skipped_count;
+  double max_diff_theta_degrees;
+  double max_e_straight;
+  // Σ E_planar over all strips.
+  double e_planar;
+  double max_planar;
+  double appro_percent;
+  uint64_t flipped_quads;
+} LmlPatternMetrics;
+
+// A level curve no strip could be built on, and why.
+typedef struct LmlSkippedCurve {
+  // Index of the curve in the `LmlCurves` the strips were built from.
+  uint64_t curve;
+  // `LML_STRIP_WARNING_*` bits; at least one of TOO_FEW_POINTS, NON_FINITE_INPUT,
+  // ZERO_LENGTH_SEGMENT, SOLVER_FAILED says why it was skipped.
+  LmlStripWarnings warnings;
+} LmlSkippedCurve;
+
 // Pseudo-geodesics: the binormal keeps the angle `theta_degrees` to the surface normal
 // (`E_angle`, paper Eq. 8–10).
 #define LML_FAMILY_PSEUDO_GEODESIC 0
@@ -187,6 +310,31 @@ typedef struct LmlReport {
 
 // Asymptotic curves, θ = 0° (`E_asy`, paper Eq. 13).
 #define LML_FAMILY_ASYMPTOTIC 2
+
+// The polyline has fewer than 3 points (the curve was skipped).
+#define LML_STRIP_WARNING_TOO_FEW_POINTS (1 << 0)
+
+// A point of the polyline is not finite (skipped).
+#define LML_STRIP_WARNING_NON_FINITE_INPUT (1 << 1)
+
+// A segment of the polyline has (nearly) zero length (skipped; resample the curves).
+#define LML_STRIP_WARNING_ZERO_LENGTH_SEGMENT (1 << 2)
+
+// The strip optimisation failed numerically (skipped).
+#define LML_STRIP_WARNING_SOLVER_FAILED (1 << 3)
+
+// The level curve passes singular field vertices: it may follow a wrong branch or turn sharply.
+#define LML_STRIP_WARNING_SINGULAR_VERTICES (1 << 4)
+
+// A closed level curve was cut open at its first point (strips are open).
+#define LML_STRIP_WARNING_CLOSED_CURVE_OPENED (1 << 5)
+
+// The width is so large that neighbouring rulings cross inside the strip and quads fold over.
+#define LML_STRIP_WARNING_WIDTH_TOO_LARGE (1 << 6)
+
+// Some quads flip their orientation against their neighbours or the target binormal side
+// (counted in `LmlStripMetrics::flipped_quads`).
+#define LML_STRIP_WARNING_FLIPPED_QUADS (1 << 7)
 
 #ifdef __cplusplus
 extern "C" {
@@ -413,6 +561,262 @@ LmlStatus lml_field_save(const struct LmlField *field,
 // inconsistent bytes, or another format version: the message says which);
 // `LML_STATUS_INVALID_ARGUMENT` (NULL `out`, NULL `bytes` with a non-zero length).
 LmlStatus lml_field_load(const uint8_t *bytes, size_t length, struct LmlField **out);
+
+// Extracts the level curves of the current field at the given values.
+//
+// - `field`: the session; its current field is used (converged or not). The curves keep their
+//   own reference to the surface, so the session may be freed or stepped on afterwards.
+// - `levels`: `level_count` field values (in the scale of the initial field), each finite and
+//   inside [min F, max F] of the current field. Copied. Each level may give several polylines
+//   (open ones from boundary to boundary first, then closed loops), or none when it only
+//   touches the surface in a point.
+// - `spacing`: 0 keeps the polylines' own vertices (one per crossed mesh edge); > 0 resamples
+//   each polyline at equal arc-length steps as close to `spacing` (a length) as its length
+//   allows, keeping the end points of open ones. Strips use these vertices, so `spacing`
+//   sets their quad length.
+// - `out`: receives the new curves, owned by the caller (release with `lml_curves_free`); set
+//   to NULL on failure.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `level_count` 0,
+// a non-finite level (its index is named) or one outside the field's range (the range is
+// given), `spacing` negative or not finite); `LML_STATUS_SINGULAR_FIELD` (the field is
+// constant).
+LmlStatus lml_curves_new(const struct LmlField *field,
+                         const double *levels,
+                         size_t level_count,
+                         double spacing,
+                         struct LmlCurves **out);
+
+// Like `lml_curves_new` at `count` levels spread uniformly over the current field's range
+// [min F, max F], the extremes left out: `min F + k (max F − min F) / (count + 1)`,
+// k = 1 … `count`. Read the values back with `lml_curves_levels`.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `count` 0, `spacing`
+// negative or not finite); `LML_STATUS_SINGULAR_FIELD` (the field is constant).
+LmlStatus lml_curves_new_uniform(const struct LmlField *field,
+                                 size_t count,
+                                 double spacing,
+                                 struct LmlCurves **out);
+
+// Releases curves. NULL is accepted and ignored. Strips built from them keep working. The handle
+// must not be used (or freed) again.
+void lml_curves_free(struct LmlCurves *curves);
+
+// Writes the number of polylines `c` to `*count` (may be 0: no level crossed the surface in
+// more than a point).
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_curves_count(const struct LmlCurves *curves, size_t *count);
+
+// Copies the offset table of the polylines: `c + 1` values starting at 0; polyline `i` has the
+// points `offsets[i] .. offsets[i + 1]` (counted in points, not doubles) of `lml_curves_points`
+// and `lml_curves_normals`, so `offsets[c]` is the total point count `k`.
+//
+// Two-call pattern: `*needed` is always set to `c + 1`; if `out` is NULL or `capacity` is
+// smaller, nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned. The buffer stays
+// owned by the caller.
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_curves_offsets(const struct LmlCurves *curves,
+                             size_t *out,
+                             size_t capacity,
+                             size_t *needed);
+
+// Copies the points of all polylines, one after another: `3k` doubles, point `p` at
+// `out[3p..3p+3]`. Each polyline runs along `∇F × n` (so its side vector `n × t` points
+// towards growing F); a closed one does not repeat its first point.
+//
+// Two-call pattern as `lml_curves_offsets` (`capacity` and `*needed` count doubles).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_curves_points(const struct LmlCurves *curves,
+                            double *out,
+                            size_t capacity,
+                            size_t *needed);
+
+// Copies the unit surface normal at each point (interpolated from the mesh's vertex normals),
+// laid out as `lml_curves_points`.
+//
+// Two-call pattern as `lml_curves_offsets` (`capacity` and `*needed` count doubles).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_curves_normals(const struct LmlCurves *curves,
+                             double *out,
+                             size_t capacity,
+                             size_t *needed);
+
+// Copies the level value of each polyline: `c` doubles.
+//
+// Two-call pattern as `lml_curves_offsets` (`*needed` is `c`; when it is 0, `out` may be NULL
+// and the call succeeds).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_curves_levels(const struct LmlCurves *curves,
+                            double *out,
+                            size_t capacity,
+                            size_t *needed);
+
+// Copies one flag per polyline: 1 when it closes on itself (a level set that never meets the
+// boundary; its last point joins its first), 0 when it runs from boundary to boundary.
+//
+// Two-call pattern as `lml_curves_levels` (`capacity` and `*needed` count bytes).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_curves_closed(const struct LmlCurves *curves,
+                            uint8_t *out,
+                            size_t capacity,
+                            size_t *needed);
+
+// Fills `*out` with the library's defaults for strips of width `width` whose binormals keep the
+// angle `theta_degrees` to the surface normal (see the fields of `LmlStripParams`).
+//
+// Returns `LML_STATUS_OK`, or `LML_STATUS_INVALID_ARGUMENT` (NULL `out`, θ not finite or
+// outside [0, 180], width not finite or ≤ 0); `*out` is left unchanged on failure.
+LmlStatus lml_strip_params_default(double theta_degrees, double width, struct LmlStripParams *out);
+
+// Builds a rectifying strip on every polyline of `curves` (in parallel; the result does not
+// depend on the thread count): each polyline is optimised into a θ-pseudo-geodesic near the
+// surface the curves were extracted from, rulings in its outer bisecting planes make planar
+// quads, and the strip is cut to `params->width` and unrolled.
+//
+// - `curves`: from `lml_curves_new` / `lml_curves_new_uniform` (resample them to the quad
+//   length the strips should have); the strips keep no reference to them.
+// - `params`: filled by `lml_strip_params_default` and possibly edited. Copied.
+// - `out`: receives the new strips, owned by the caller (release with `lml_strips_free`); set
+//   to NULL on failure.
+//
+// A polyline that cannot carry a strip (fewer than 3 points, a zero-length segment, a failed
+// optimisation) does not fail the call: it is listed by `lml_strips_skipped`.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer; width not finite or
+// ≤ 0, θ outside [0, 180], a weight negative or not finite (the parameter is named)).
+LmlStatus lml_strips_new(const struct LmlCurves *curves,
+                         const struct LmlStripParams *params,
+                         struct LmlStrips **out);
+
+// Releases strips. NULL is accepted and ignored. The handle must not be used (or freed) again.
+void lml_strips_free(struct LmlStrips *strips);
+
+// Writes the number of strips `s` to `*count`.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_strips_count(const struct LmlStrips *strips, size_t *count);
+
+// Copies the offset table of the centre points: `s + 1` values starting at 0; strip `i` has the
+// points `offsets[i] .. offsets[i + 1]` of `lml_strips_centres`, `lml_strips_rulings` and
+// `lml_strips_unrolled_centres` (counted in points, not doubles).
+//
+// Two-call pattern: `*needed` is always set to `s + 1`; if `out` is NULL or `capacity` is
+// smaller, nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned. The buffer stays
+// owned by the caller.
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_strips_point_offsets(const struct LmlStrips *strips,
+                                   size_t *out,
+                                   size_t capacity,
+                                   size_t *needed);
+
+// Copies the offset table of the strip vertices (`2n` per strip of `n` points): `s + 1` values
+// starting at 0, indexing the vertices of `lml_strips_vertices` and
+// `lml_strips_unrolled_vertices`. Two-call pattern as `lml_strips_point_offsets`.
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_strips_vertex_offsets(const struct LmlStrips *strips,
+                                    size_t *out,
+                                    size_t capacity,
+                                    size_t *needed);
+
+// Copies the offset table of the quads (`n − 1` per strip of `n` points): `s + 1` values
+// starting at 0, indexing the quads of `lml_strips_quads`. Two-call pattern as
+// `lml_strips_point_offsets`.
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_strips_quad_offsets(const struct LmlStrips *strips,
+                                  size_t *out,
+                                  size_t capacity,
+                                  size_t *needed);
+
+// Copies the strip vertices in space: `3v` doubles (`v` = total vertex count), each strip's
+// `2n` vertices in the order described at `LmlStrips` (`left_i` = centre_i + s_i ruling_i,
+// `right_i` = centre_i − s_i ruling_i, with s_i chosen so that the flat strip has the
+// requested width).
+//
+// Two-call pattern as `lml_strips_point_offsets` (`capacity` and `*needed` count doubles).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_strips_vertices(const struct LmlStrips *strips,
+                              double *out,
+                              size_t capacity,
+                              size_t *needed);
+
+// Copies the quads: `4q` zero-based vertex indices into the whole `lml_strips_vertices` array
+// (not per strip), quad `j` of a strip with `n` points and first vertex `o` being
+// `(o + j, o + j + 1, o + n + j + 1, o + n + j)`. The quads of a strip are planar up to
+// `max_planar` of its metrics, and consistently oriented.
+//
+// Two-call pattern as `lml_strips_point_offsets` (`capacity` and `*needed` count indices).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL`, `LML_STATUS_INVALID_ARGUMENT`, or
+// `LML_STATUS_INTERNAL_ERROR` (more vertices than `uint32_t` indices reach).
+LmlStatus lml_strips_quads(const struct LmlStrips *strips,
+                           uint32_t *out,
+                           size_t capacity,
+                           size_t *needed);
+
+// Copies the centre lines (the optimised base polylines, the strips' medial lines): `3k`
+// doubles, `k` the total point count, strips one after another as `lml_strips_point_offsets`
+// says.
+//
+// Two-call pattern as `lml_strips_point_offsets` (`capacity` and `*needed` count doubles).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_strips_centres(const struct LmlStrips *strips,
+                             double *out,
+                             size_t capacity,
+                             size_t *needed);
+
+// Copies the unit rulings `d_i` at the centre points (in the outer bisecting planes, Eq. 16,
+// on the binormals' side), laid out as `lml_strips_centres`.
+//
+// Two-call pattern as `lml_strips_point_offsets` (`capacity` and `*needed` count doubles).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_strips_rulings(const struct LmlStrips *strips,
+                             double *out,
+                             size_t capacity,
+                             size_t *needed);
+
+// Copies the strips laid flat: `2v` doubles, `(x, y)` of each vertex of `lml_strips_vertices`
+// in the same order, so `lml_strips_quads` indexes them too. Each strip is unrolled quad by
+// quad, isometrically, starting at the origin with its first centre edge along +x; strips are
+// not arranged against each other.
+//
+// Two-call pattern as `lml_strips_point_offsets` (`capacity` and `*needed` count doubles).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_strips_unrolled_vertices(const struct LmlStrips *strips,
+                                       double *out,
+                                       size_t capacity,
+                                       size_t *needed);
+
+// Copies the unrolled centre lines: `2k` doubles, `(x, y)` of each point of
+// `lml_strips_centres` in the same order (straight up to `e_straight` of the metrics).
+//
+// Two-call pattern as `lml_strips_point_offsets` (`capacity` and `*needed` count doubles).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_strips_unrolled_centres(const struct LmlStrips *strips,
+                                      double *out,
+                                      size_t capacity,
+                                      size_t *needed);
+
+// Copies one `LmlStripMetrics` per strip, in strip order.
+//
+// Two-call pattern as `lml_strips_point_offsets` (`capacity` and `*needed` count structs;
+// when `*needed` is 0, `out` may be NULL and the call succeeds).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_strips_metrics(const struct LmlStrips *strips,
+                             struct LmlStripMetrics *out,
+                             size_t capacity,
+                             size_t *needed);
+
+// Writes the measures of the whole pattern to `*metrics`.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_strips_pattern_metrics(const struct LmlStrips *strips,
+                                     struct LmlPatternMetrics *metrics);
+
+// Copies the curves no strip could be built on, one `LmlSkippedCurve` each, in curve order.
+//
+// Two-call pattern as `lml_strips_metrics` (`*needed` is often 0).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_strips_skipped(const struct LmlStrips *strips,
+                             struct LmlSkippedCurve *out,
+                             size_t capacity,
+                             size_t *needed);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Checks Lamella's C ABI from the outside: builds the library, compiles the C harness
 # (tests/c) as strict C99 and the header as C++17, runs the harness under valgrind (zero
-# errors, zero leaks), and builds and runs the C and C++ examples (examples/c, examples/cpp).
+# errors, zero leaks), and builds and runs the C and C++ examples (examples/c, examples/cpp),
+# which must write the same curves and strips.
 # Needs cargo, cc, c++ and valgrind (installed with apt-get if missing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -43,6 +44,11 @@ mkdir -p "$scratch/c" "$scratch/cpp"
 "$build/design_c" "$scratch/c"
 # The C++ example reads the mesh the C example wrote, covering the OBJ path as well.
 "$build/design_cpp" "$scratch/cpp" "$scratch/c/mesh.obj"
+# Same mesh (through OBJ), same results: the C++ side even goes through a saved and restored session.
 cmp <(cut -d, -f4 "$scratch/c/field.csv") <(cut -d, -f4 "$scratch/cpp/field.csv") >/dev/null \
-    || { echo "the C and C++ examples disagree"; exit 1; }
+    || { echo "the C and C++ examples disagree on the field"; exit 1; }
+for obj in curves.obj strips.obj; do
+    grep -q '^[lf] ' "$scratch/c/$obj" || { echo "$obj has no polylines or faces"; exit 1; }
+    cmp "$scratch/c/$obj" "$scratch/cpp/$obj" >/dev/null || { echo "the C and C++ examples disagree on $obj"; exit 1; }
+done
 echo "== C ABI: all checks passed"

@@ -1,10 +1,12 @@
-/* Designs a theta = 60 degree pseudo-geodesic field through Lamella's C ABI, step by step.
+/* Designs a theta = 60 degree strip pattern through Lamella's C ABI, step by step.
  *
  * Usage: design OUT_DIR [MESH.obj]
  * Reads the mesh from MESH.obj or generates a parabolic vault, starts from the coordinate along
- * the mesh's longest extent, steps the optimisation until it converges while printing progress,
- * and writes OUT_DIR/mesh.obj, OUT_DIR/field.csv (x,y,z,field per vertex) and
- * OUT_DIR/binormals.csv (x,y,z,bx,by,bz per vertex; zero at boundary vertices). */
+ * the mesh's longest extent, steps the field optimisation until it converges while printing
+ * progress, extracts level curves and builds rectifying strips on them, and writes
+ * OUT_DIR/mesh.obj, OUT_DIR/field.csv (x,y,z,field per vertex), OUT_DIR/binormals.csv
+ * (x,y,z,bx,by,bz per vertex; zero at boundary vertices), OUT_DIR/curves.obj (the level
+ * polylines as `l` lines) and OUT_DIR/strips.obj (the strips' planar quads, one group each). */
 #include "lamella.h"
 #include "vault.h"
 
@@ -14,6 +16,10 @@
 #define THETA 60.0
 #define STEP 5
 #define MAX_ITERATIONS 300
+/* Strip layout: this many level curves, resampled at this spacing, strips this wide. */
+#define CURVES 6
+#define SPACING 0.5
+#define WIDTH 0.4
 
 /* Prints the failure and returns 0 when `status` is an error. */
 static int ok(LmlStatus status, const char *what)
@@ -143,6 +149,147 @@ static int write_outputs(const char *dir, const LmlMesh *mesh, const double *xyz
     return 1;
 }
 
+/* The two-call pattern for any array: `get(handle, out, capacity, needed)` through a wrapper,
+ * malloc'd (`size` bytes per element), or NULL. */
+typedef LmlStatus (*Getter)(const void *handle, void *out, size_t capacity, size_t *needed);
+
+static void *fetch_any(Getter get, const void *handle, size_t size, size_t *count, const char *what)
+{
+    size_t needed = 0;
+    void *out;
+    LmlStatus status = get(handle, NULL, 0, &needed);
+    if (status != LML_STATUS_BUFFER_TOO_SMALL && !ok(status, what)) {
+        return NULL;
+    }
+    out = malloc(needed * size + 1); /* + 1: never malloc(0) */
+    if (out != NULL && !ok(get(handle, out, needed, &needed), what)) {
+        free(out);
+        return NULL;
+    }
+    *count = needed;
+    return out;
+}
+
+/* Typed adapters from the library's getters to `Getter`. */
+static LmlStatus curve_offsets(const void *h, void *out, size_t capacity, size_t *needed)
+{
+    return lml_curves_offsets((const LmlCurves *)h, (size_t *)out, capacity, needed);
+}
+static LmlStatus curve_points(const void *h, void *out, size_t capacity, size_t *needed)
+{
+    return lml_curves_points((const LmlCurves *)h, (double *)out, capacity, needed);
+}
+static LmlStatus strip_offsets(const void *h, void *out, size_t capacity, size_t *needed)
+{
+    return lml_strips_quad_offsets((const LmlStrips *)h, (size_t *)out, capacity, needed);
+}
+static LmlStatus strip_vertices(const void *h, void *out, size_t capacity, size_t *needed)
+{
+    return lml_strips_vertices((const LmlStrips *)h, (double *)out, capacity, needed);
+}
+static LmlStatus strip_quads(const void *h, void *out, size_t capacity, size_t *needed)
+{
+    return lml_strips_quads((const LmlStrips *)h, (uint32_t *)out, capacity, needed);
+}
+static LmlStatus strip_metrics(const void *h, void *out, size_t capacity, size_t *needed)
+{
+    return lml_strips_metrics((const LmlStrips *)h, (LmlStripMetrics *)out, capacity, needed);
+}
+
+/* Writes `count` points as OBJ vertices. */
+static void write_vertices(FILE *file, const double *xyz, size_t count)
+{
+    size_t v;
+    for (v = 0; v < count; v++) {
+        fprintf(file, "v %.17g %.17g %.17g\n", xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]);
+    }
+}
+
+/* Writes the level polylines to DIR/curves.obj, one `l` line each. */
+static int write_curves(const char *dir, const LmlCurves *curves)
+{
+    char path[4096];
+    FILE *file;
+    size_t c = 0, k = 0, i, p;
+    size_t *offsets = fetch_any(curve_offsets, curves, sizeof(size_t), &c, "lml_curves_offsets");
+    double *points = fetch_any(curve_points, curves, sizeof(double), &k, "lml_curves_points");
+    int written = 0;
+    snprintf(path, sizeof path, "%s/curves.obj", dir);
+    if (offsets != NULL && points != NULL && (file = fopen(path, "w")) != NULL) {
+        write_vertices(file, points, k / 3);
+        for (i = 0; i + 1 < c; i++) {
+            fprintf(file, "l");
+            for (p = offsets[i]; p < offsets[i + 1]; p++) {
+                fprintf(file, " %lu", (unsigned long)p + 1);
+            }
+            fprintf(file, "\n");
+        }
+        written = fclose(file) == 0;
+    }
+    free(offsets);
+    free(points);
+    return written;
+}
+
+/* Prints the strips' Table 4 measures and writes their quads to DIR/strips.obj, one group each. */
+static int write_strips(const char *dir, const LmlStrips *strips)
+{
+    char path[4096];
+    FILE *file;
+    size_t s = 0, v = 0, q = 0, m = 0, i, j;
+    size_t *offsets = fetch_any(strip_offsets, strips, sizeof(size_t), &s, "lml_strips_quad_offsets");
+    double *xyz = fetch_any(strip_vertices, strips, sizeof(double), &v, "lml_strips_vertices");
+    uint32_t *quads = fetch_any(strip_quads, strips, sizeof(uint32_t), &q, "lml_strips_quads");
+    LmlStripMetrics *metrics = fetch_any(strip_metrics, strips, sizeof(LmlStripMetrics), &m, "lml_strips_metrics");
+    LmlPatternMetrics pattern;
+    int written = 0;
+    snprintf(path, sizeof path, "%s/strips.obj", dir);
+    if (offsets != NULL && xyz != NULL && quads != NULL && metrics != NULL &&
+        ok(lml_strips_pattern_metrics(strips, &pattern), "lml_strips_pattern_metrics") &&
+        (file = fopen(path, "w")) != NULL) {
+        for (i = 0; i < m; i++) {
+            printf("strip %lu: length %.2f  diff_theta %.3f deg  e_straight %.1e  max planarity %.1e%s\n",
+                   (unsigned long)i, metrics[i].length, metrics[i].max_diff_theta_degrees, metrics[i].e_straight,
+                   metrics[i].max_planar, metrics[i].warnings != 0 ? "  (warnings)" : "");
+        }
+        printf("%lu strips, %lu curves skipped; max diff_theta %.3f deg, max e_straight %.1e\n",
+               (unsigned long)pattern.strip_count, (unsigned long)pattern.skipped_count,
+               pattern.max_diff_theta_degrees, pattern.max_e_straight);
+        write_vertices(file, xyz, v / 3);
+        for (i = 0; i + 1 < s; i++) {
+            fprintf(file, "g strip%lu\n", (unsigned long)i);
+            for (j = offsets[i]; j < offsets[i + 1]; j++) {
+                const uint32_t *quad = quads + 4 * j;
+                fprintf(file, "f %u %u %u %u\n", quad[0] + 1, quad[1] + 1, quad[2] + 1, quad[3] + 1);
+            }
+        }
+        written = fclose(file) == 0;
+    }
+    free(offsets);
+    free(xyz);
+    free(quads);
+    free(metrics);
+    return written;
+}
+
+/* Level curves of the converged field, strips on them, both written as OBJ. */
+static int design_strips(const char *dir, const LmlField *field)
+{
+    LmlCurves *curves = NULL;
+    LmlStrips *strips = NULL;
+    LmlStripParams params;
+    int success = ok(lml_curves_new_uniform(field, CURVES, SPACING, &curves), "lml_curves_new_uniform") &&
+                  ok(lml_strip_params_default(THETA, WIDTH, &params), "lml_strip_params_default") &&
+                  ok(lml_strips_new(curves, &params, &strips), "lml_strips_new") &&
+                  write_curves(dir, curves) && write_strips(dir, strips);
+    if (success) {
+        printf("wrote %s/curves.obj, %s/strips.obj\n", dir, dir);
+    }
+    lml_strips_free(strips);
+    lml_curves_free(curves);
+    return success;
+}
+
 int main(int argc, char **argv)
 {
     LmlMesh *mesh;
@@ -186,7 +333,7 @@ int main(int argc, char **argv)
         values = fetch(lml_field_values, field, "lml_field_values");
         binormals = fetch(lml_field_binormals, field, "lml_field_binormals");
         success = status == LML_STATUS_CONVERGED && values != NULL && binormals != NULL &&
-                  write_outputs(argv[1], mesh, xyz, n, values, binormals);
+                  write_outputs(argv[1], mesh, xyz, n, values, binormals) && design_strips(argv[1], field);
     }
     free(values);
     free(binormals);

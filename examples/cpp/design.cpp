@@ -1,10 +1,13 @@
 // The C example (examples/c/design.c) through the RAII wrapper lamella.hpp: designs a
-// theta = 60 degree pseudo-geodesic field step by step.
+// theta = 60 degree strip pattern step by step.
 //
 // Usage: design_cpp OUT_DIR [MESH.obj]
 // Reads MESH.obj or generates a parabolic vault, starts from the coordinate along the mesh's
 // longest extent, steps until convergence printing progress, stores the session and restores
-// it (as a CAD document would), and writes OUT_DIR/field.csv and OUT_DIR/binormals.csv.
+// it (as a CAD document would), writes OUT_DIR/field.csv and OUT_DIR/binormals.csv, then
+// extracts level curves, builds rectifying strips on them and writes OUT_DIR/curves.obj
+// (polylines as `l` lines) and OUT_DIR/strips.obj (planar quads, one group per strip), with
+// the same layout and numbers as the C example's files.
 #include "lamella.hpp"
 #include "vault.h"
 
@@ -14,6 +17,9 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
 
 namespace {
 
@@ -67,6 +73,54 @@ void write_csv(const std::string &path, const char *header, const std::vector<do
     }
 }
 
+// OBJ vertices, formatted as the C example formats them (so the files can be compared).
+void write_vertices(std::FILE *file, const std::vector<double> &xyz) {
+    for (std::size_t v = 0; v + 2 < xyz.size(); v += 3) {
+        std::fprintf(file, "v %.17g %.17g %.17g\n", xyz[v], xyz[v + 1], xyz[v + 2]);
+    }
+}
+
+// Owns a FILE (closed on every path).
+struct FileCloser {
+    void operator()(std::FILE *file) const noexcept { std::fclose(file); }
+};
+using File = std::unique_ptr<std::FILE, FileCloser>;
+
+File open_for_writing(const std::string &path) {
+    File file(std::fopen(path.c_str(), "w"));
+    if (!file) {
+        throw std::runtime_error("cannot write " + path);
+    }
+    return file;
+}
+
+void write_curves(const std::string &path, const lamella::Curves &curves) {
+    File file = open_for_writing(path);
+    std::vector<std::size_t> offsets = curves.offsets();
+    write_vertices(file.get(), curves.points());
+    for (std::size_t i = 0; i + 1 < offsets.size(); ++i) {
+        std::fprintf(file.get(), "l");
+        for (std::size_t p = offsets[i]; p < offsets[i + 1]; ++p) {
+            std::fprintf(file.get(), " %lu", static_cast<unsigned long>(p) + 1);
+        }
+        std::fprintf(file.get(), "\n");
+    }
+}
+
+void write_strips(const std::string &path, const lamella::Strips &strips) {
+    File file = open_for_writing(path);
+    std::vector<std::size_t> offsets = strips.quad_offsets();
+    std::vector<std::uint32_t> quads = strips.quads();
+    write_vertices(file.get(), strips.vertices());
+    for (std::size_t i = 0; i + 1 < offsets.size(); ++i) {
+        std::fprintf(file.get(), "g strip%lu\n", static_cast<unsigned long>(i));
+        for (std::size_t j = offsets[i]; j < offsets[i + 1]; ++j) {
+            const std::uint32_t *quad = &quads[4 * j];
+            std::fprintf(file.get(), "f %u %u %u %u\n", quad[0] + 1, quad[1] + 1, quad[2] + 1, quad[3] + 1);
+        }
+    }
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -101,6 +155,17 @@ int main(int argc, char **argv) {
         write_csv(dir + "/field.csv", "x,y,z,field", xyz, reopened.values(), 1);
         write_csv(dir + "/binormals.csv", "x,y,z,bx,by,bz", xyz, reopened.binormals(), 3);
         std::cout << "wrote " << dir << "/field.csv, " << dir << "/binormals.csv\n";
+
+        // Six level curves resampled at 0.5, strips 0.4 wide (as the C example).
+        lamella::Curves curves = lamella::Curves::uniform(reopened, 6, 0.5);
+        lamella::Strips strips(curves, lamella::Strips::params(60.0, 0.4));
+        LmlPatternMetrics pattern = strips.pattern_metrics();
+        std::printf("%lu strips, %lu curves skipped; max diff_theta %.3f deg, max e_straight %.1e\n",
+                    static_cast<unsigned long>(pattern.strip_count), static_cast<unsigned long>(pattern.skipped_count),
+                    pattern.max_diff_theta_degrees, pattern.max_e_straight);
+        write_curves(dir + "/curves.obj", curves);
+        write_strips(dir + "/strips.obj", strips);
+        std::cout << "wrote " << dir << "/curves.obj, " << dir << "/strips.obj\n";
         return 0;
     } catch (const std::exception &e) {
         std::cerr << "error: " << e.what() << '\n';

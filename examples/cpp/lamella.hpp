@@ -40,8 +40,16 @@ struct MeshDeleter {
 struct FieldDeleter {
     void operator()(LmlField *field) const noexcept { lml_field_free(field); }
 };
+struct CurvesDeleter {
+    void operator()(LmlCurves *curves) const noexcept { lml_curves_free(curves); }
+};
+struct StripsDeleter {
+    void operator()(LmlStrips *strips) const noexcept { lml_strips_free(strips); }
+};
 using MeshHandle = std::unique_ptr<LmlMesh, MeshDeleter>;
 using FieldHandle = std::unique_ptr<LmlField, FieldDeleter>;
+using CurvesHandle = std::unique_ptr<LmlCurves, CurvesDeleter>;
+using StripsHandle = std::unique_ptr<LmlStrips, StripsDeleter>;
 
 // The two-call pattern: asks for the size, then fills a vector of exactly that size.
 template <class T, class Get>
@@ -121,10 +129,81 @@ public:
         check(lml_field_load(bytes.data(), bytes.size(), &raw), "lml_field_load");
         return Field(FieldHandle(raw));
     }
+    const LmlField *get() const { return handle_.get(); }
 
 private:
     explicit Field(FieldHandle handle) : handle_(std::move(handle)) {}
     FieldHandle handle_;
+};
+
+// Level curves of a field: polylines as points (x y z ...) cut by offsets (c + 1 entries).
+class Curves {
+public:
+    // `count` uniform levels, resampled at `spacing` (0: not resampled).
+    static Curves uniform(const Field &field, std::size_t count, double spacing) {
+        LmlCurves *raw = nullptr;
+        check(lml_curves_new_uniform(field.get(), count, spacing, &raw), "lml_curves_new_uniform");
+        return Curves(CurvesHandle(raw));
+    }
+    std::vector<std::size_t> offsets() const {
+        return fetch<std::size_t>([&](std::size_t *out, std::size_t capacity, std::size_t *needed) {
+            return lml_curves_offsets(handle_.get(), out, capacity, needed);
+        }, "lml_curves_offsets");
+    }
+    std::vector<double> points() const {
+        return fetch<double>([&](double *out, std::size_t capacity, std::size_t *needed) {
+            return lml_curves_points(handle_.get(), out, capacity, needed);
+        }, "lml_curves_points");
+    }
+    const LmlCurves *get() const { return handle_.get(); }
+
+private:
+    explicit Curves(CurvesHandle handle) : handle_(std::move(handle)) {}
+    CurvesHandle handle_;
+};
+
+// Rectifying strips: vertices (x y z ...), quads (4 indices each) cut per strip by quad offsets,
+// and the Table 4 measures.
+class Strips {
+public:
+    Strips(const Curves &curves, const LmlStripParams &params) {
+        LmlStrips *raw = nullptr;
+        check(lml_strips_new(curves.get(), &params, &raw), "lml_strips_new");
+        handle_.reset(raw);
+    }
+    static LmlStripParams params(double theta_degrees, double width) {
+        LmlStripParams params;
+        check(lml_strip_params_default(theta_degrees, width, &params), "lml_strip_params_default");
+        return params;
+    }
+    std::vector<double> vertices() const {
+        return fetch<double>([&](double *out, std::size_t capacity, std::size_t *needed) {
+            return lml_strips_vertices(handle_.get(), out, capacity, needed);
+        }, "lml_strips_vertices");
+    }
+    std::vector<std::uint32_t> quads() const {
+        return fetch<std::uint32_t>([&](std::uint32_t *out, std::size_t capacity, std::size_t *needed) {
+            return lml_strips_quads(handle_.get(), out, capacity, needed);
+        }, "lml_strips_quads");
+    }
+    std::vector<std::size_t> quad_offsets() const {
+        return fetch<std::size_t>([&](std::size_t *out, std::size_t capacity, std::size_t *needed) {
+            return lml_strips_quad_offsets(handle_.get(), out, capacity, needed);
+        }, "lml_strips_quad_offsets");
+    }
+    std::vector<LmlStripMetrics> metrics() const {
+        return fetch<LmlStripMetrics>([&](LmlStripMetrics *out, std::size_t capacity, std::size_t *needed) {
+            return lml_strips_metrics(handle_.get(), out, capacity, needed);
+        }, "lml_strips_metrics");
+    }
+    LmlPatternMetrics pattern_metrics() const {
+        LmlPatternMetrics metrics;
+        check(lml_strips_pattern_metrics(handle_.get(), &metrics), "lml_strips_pattern_metrics");
+        return metrics;
+    }
+
+private:
+    StripsHandle handle_;
 };
 
 }  // namespace lamella

@@ -1,9 +1,11 @@
 //! A failed call: its status and message, and how the library's Rust errors map to statuses.
 
 use super::status::LmlStatus;
+use crate::curves::CurveError;
 use crate::field::FieldError;
 use crate::mesh::MeshError;
 use crate::solver::SolverError;
+use crate::strips::StripError;
 
 /// Why an `lml_*` call failed.
 #[derive(Debug)]
@@ -50,5 +52,26 @@ impl From<FieldError> for Failure {
             _ => LmlStatus::InternalError,
         };
         Failure::new(status, e.to_string())
+    }
+}
+
+impl From<CurveError> for Failure {
+    fn from(e: CurveError) -> Failure {
+        let status = match &e {
+            CurveError::NoLevels | CurveError::NonFiniteLevel { .. } | CurveError::LevelOutOfRange { .. } | CurveError::InvalidSpacing { .. } => {
+                LmlStatus::InvalidArgument
+            }
+            CurveError::ConstantField => LmlStatus::SingularField,
+            // The field and the curves come from the library itself: a mismatch is a bug.
+            CurveError::FieldLength { .. } | CurveError::NonFiniteField { .. } | CurveError::NormalCount { .. } => LmlStatus::InternalError,
+        };
+        Failure::new(status, e.to_string())
+    }
+}
+
+impl From<StripError> for Failure {
+    /// Every strip error is a parameter out of range.
+    fn from(e: StripError) -> Failure {
+        Failure::new(LmlStatus::InvalidArgument, format!("argument `params`: {e}"))
     }
 }

@@ -4,17 +4,31 @@
 use super::failure::Failure;
 use super::field_params::{LmlFieldParams, LmlWeights};
 use super::guard::guarded;
-use super::mesh::{flat_xyz, LmlMesh};
+use super::layout::flat_xyz;
+use super::mesh::LmlMesh;
 use super::raw::{copy_out, handle, handle_mut, input, release, Out};
 use super::report::LmlReport;
 use super::status::LmlStatus;
 use crate::field::FieldSolver;
+use crate::mesh::TriMesh;
+use std::sync::Arc;
 
 /// A field optimisation session (opaque): a copy of the mesh, the scalar field, the auxiliary
 /// variables and the solver state. Create it with `lml_field_new` or `lml_field_load`, release
 /// it with `lml_field_free`.
 pub struct LmlField {
     pub(crate) solver: FieldSolver,
+    /// The surface in the caller's units, shared (read-only) with the curves extracted from it.
+    pub(crate) mesh: Arc<TriMesh>,
+}
+
+impl LmlField {
+    /// A handle around `solver`. The mesh is always derived from the solver, so a restored
+    /// session yields the same curves, bit for bit, as the one that was saved.
+    pub(crate) fn new(solver: FieldSolver) -> LmlField {
+        let mesh = Arc::new(solver.mesh());
+        LmlField { solver, mesh }
+    }
 }
 
 /// Starts a field optimisation whose level sets should form the family of `params`.
@@ -44,7 +58,7 @@ pub unsafe extern "C" fn lml_field_new(
         let mesh = unsafe { handle(mesh, "mesh") }?;
         let initial_field = unsafe { input(initial_field, n, "initial_field") }?;
         let params = unsafe { handle(params, "params") }?.to_params()?;
-        out.set_owned(LmlField { solver: FieldSolver::new(&mesh.mesh, initial_field, params)? });
+        out.set_owned(LmlField::new(FieldSolver::new(&mesh.mesh, initial_field, params)?));
         Ok(LmlStatus::Ok)
     })
 }
@@ -195,17 +209,4 @@ pub unsafe extern "C" fn lml_field_singular_vertices(field: *const LmlField, out
         let field = unsafe { handle(field, "field") }?;
         unsafe { copy_out(&field.solver.report().singular_vertices, out, capacity, needed, "out") }
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The header promises that handles may move between threads (one thread at a time).
-    #[test]
-    fn handles_may_move_between_threads() {
-        fn movable<T: Send>() {}
-        movable::<LmlMesh>();
-        movable::<LmlField>();
-    }
 }

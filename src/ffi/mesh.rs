@@ -1,9 +1,10 @@
 //! `LmlMesh`: a validated triangle mesh, a topological disk possibly with holes (paper Sec. 7).
 
 use super::guard::guarded;
+use super::layout::flat_xyz;
 use super::raw::{copy_out, element_count, handle, input, release, utf8, Out};
 use super::status::LmlStatus;
-use crate::mesh::{TriMesh, Vec3};
+use crate::mesh::TriMesh;
 use std::ffi::c_char;
 use std::path::Path;
 
@@ -131,9 +132,4 @@ pub unsafe extern "C" fn lml_mesh_triangles(mesh: *const LmlMesh, out: *mut u32,
         let triangles: Vec<u32> = mesh.mesh.faces().iter().flatten().copied().collect();
         unsafe { copy_out(&triangles, out, capacity, needed, "out") }
     })
-}
-
-/// Vectors as the flat `x0 y0 z0 x1 y1 z1 …` layout of the C ABI.
-pub(crate) fn flat_xyz(vectors: &[Vec3]) -> Vec<f64> {
-    vectors.iter().flat_map(|v| [v.x, v.y, v.z]).collect()
 }

@@ -7,9 +7,10 @@
 //! reach the caller. Raw pointers are touched only in [`raw`]. The few functions that return a
 //! value rather than a status (versions, status names, the error message) cannot fail or panic.
 //!
-//! Today the ABI covers meshes ([`LmlMesh`]) and field solver sessions ([`LmlField`]); level
-//! curves and strips will follow as `LmlCurves` / `LmlStrips` in the same style (a handle
-//! module, `lml_<handle>_new` / `_free`, two-call array outputs).
+//! The ABI covers the whole pipeline: meshes ([`LmlMesh`]), field solver sessions
+//! ([`LmlField`]), level curves ([`LmlCurves`]) and rectifying strips with their unrollings and
+//! metrics ([`LmlStrips`]), each a handle module with `lml_<handle>_new` / `_free` and two-call
+//! array outputs.
 //!
 //! The header is generated from this module by cbindgen (configuration in `cbindgen.toml`);
 //! `tests/ffi_header.rs` fails when the committed header is stale and rewrites it when
@@ -27,12 +28,18 @@ mod last_error;
 mod guard;
 mod failure;
 mod raw;
+mod layout;
 mod mesh;
 mod field_params;
 mod report;
 mod field;
 mod session;
+mod curves;
+mod strip_params;
+mod strip_metrics;
+mod strips;
 
+pub use curves::*;
 pub use field::*;
 pub use field_params::*;
 pub use guard::lml_debug_trigger_panic;
@@ -41,4 +48,22 @@ pub use mesh::*;
 pub use report::*;
 pub use session::*;
 pub use status::*;
+pub use strip_metrics::*;
+pub use strip_params::*;
+pub use strips::*;
 pub use version::*;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The header promises that handles may move between threads (one thread at a time).
+    #[test]
+    fn handles_may_move_between_threads() {
+        fn movable<T: Send>() {}
+        movable::<LmlMesh>();
+        movable::<LmlField>();
+        movable::<LmlCurves>();
+        movable::<LmlStrips>();
+    }
+}

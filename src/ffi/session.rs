@@ -38,7 +38,7 @@ pub unsafe extern "C" fn lml_field_load(bytes: *const u8, length: usize, out: *m
         let mut out = unsafe { Out::new(out, "out") }?;
         out.set(std::ptr::null_mut());
         let bytes = unsafe { input(bytes, length, "bytes") }?;
-        out.set_owned(LmlField { solver: FieldSolver::from_bytes(bytes)? });
+        out.set_owned(LmlField::new(FieldSolver::from_bytes(bytes)?));
         Ok(LmlStatus::Ok)
     })
 }

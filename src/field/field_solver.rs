@@ -147,6 +147,12 @@ impl FieldSolver {
         Ok(())
     }
 
+    /// The mesh in the caller's units: the solver's unit-scaled copy scaled back (the input
+    /// mesh up to rounding, and the same for a session restored by `from_bytes`).
+    pub fn mesh(&self) -> TriMesh {
+        self.problem.mesh().scaled(1.0 / self.scales.length)
+    }
+
     pub fn params(&self) -> &FieldParams {
         &self.params
     }

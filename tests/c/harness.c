@@ -25,6 +25,8 @@ int main(int argc, char **argv)
     CHECK(field != NULL);
     if (field != NULL) {
         test_session(field);
+        /* The rest of the pipeline: field -> curves -> strips -> unrolled strips. */
+        test_strips(field, test_curves(field, &cylinder));
     }
     lml_field_free(field);
     cylinder_free(&cylinder);

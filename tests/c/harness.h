@@ -18,5 +18,12 @@ LmlField *test_solve(const Cylinder *cylinder);
 void test_threads(const Cylinder *cylinder);
 /* Save / load round trip of a session and corrupted, truncated and future-version data. */
 void test_session(LmlField *field);
+/* Level curves of the converged session: lifecycle, every invalid input, geometry on the
+ * cylinder, the same curves from a restored session. Returns 3 curves resampled at spacing 1
+ * (owned by the caller) or NULL. */
+LmlCurves *test_curves(const LmlField *field, const Cylinder *cylinder);
+/* Strips on `curves` (taken over and freed): parameters, every invalid input, Table 4 metrics
+ * and independent checks of planarity, unrolling and width; skipped curves. */
+void test_strips(const LmlField *field, LmlCurves *curves);
 
 #endif

@@ -1,0 +1,142 @@
+//! The quality measures of paper Table 4 per strip and per pattern, and the strip warnings as
+//! bit flags, as plain C structs.
+
+use crate::strips::{PatternMetrics, RectifyingStrip, SkippedCurve, StripWarning};
+
+/// A set of `LML_STRIP_WARNING_*` bits.
+pub type LmlStripWarnings = u64;
+/// The polyline has fewer than 3 points (the curve was skipped).
+pub const LML_STRIP_WARNING_TOO_FEW_POINTS: LmlStripWarnings = 1 << 0;
+/// A point of the polyline is not finite (skipped).
+pub const LML_STRIP_WARNING_NON_FINITE_INPUT: LmlStripWarnings = 1 << 1;
+/// A segment of the polyline has (nearly) zero length (skipped; resample the curves).
+pub const LML_STRIP_WARNING_ZERO_LENGTH_SEGMENT: LmlStripWarnings = 1 << 2;
+/// The strip optimisation failed numerically (skipped).
+pub const LML_STRIP_WARNING_SOLVER_FAILED: LmlStripWarnings = 1 << 3;
+/// The level curve passes singular field vertices: it may follow a wrong branch or turn sharply.
+pub const LML_STRIP_WARNING_SINGULAR_VERTICES: LmlStripWarnings = 1 << 4;
+/// A closed level curve was cut open at its first point (strips are open).
+pub const LML_STRIP_WARNING_CLOSED_CURVE_OPENED: LmlStripWarnings = 1 << 5;
+/// The width is so large that neighbouring rulings cross inside the strip and quads fold over.
+pub const LML_STRIP_WARNING_WIDTH_TOO_LARGE: LmlStripWarnings = 1 << 6;
+/// Some quads flip their orientation against their neighbours or the target binormal side
+/// (counted in `LmlStripMetrics::flipped_quads`).
+pub const LML_STRIP_WARNING_FLIPPED_QUADS: LmlStripWarnings = 1 << 7;
+
+fn warning_bit(warning: &StripWarning) -> LmlStripWarnings {
+    match warning {
+        StripWarning::TooFewPoints { .. } => LML_STRIP_WARNING_TOO_FEW_POINTS,
+        StripWarning::NonFiniteInput => LML_STRIP_WARNING_NON_FINITE_INPUT,
+        StripWarning::ZeroLengthSegment { .. } => LML_STRIP_WARNING_ZERO_LENGTH_SEGMENT,
+        StripWarning::SolverFailed { .. } => LML_STRIP_WARNING_SOLVER_FAILED,
+        StripWarning::SingularVertices { .. } => LML_STRIP_WARNING_SINGULAR_VERTICES,
+        StripWarning::ClosedCurveOpened => LML_STRIP_WARNING_CLOSED_CURVE_OPENED,
+        StripWarning::WidthTooLarge { .. } => LML_STRIP_WARNING_WIDTH_TOO_LARGE,
+        StripWarning::FlippedQuads { .. } => LML_STRIP_WARNING_FLIPPED_QUADS,
+    }
+}
+
+fn warning_bits(warnings: &[StripWarning]) -> LmlStripWarnings {
+    warnings.iter().fold(0, |bits, w| bits | warning_bit(w))
+}
+
+fn count(n: usize) -> u64 {
+    n as u64
+}
+
+/// One strip: which curve it was built on and its Table 4 measures. Lengths are in the mesh's
+/// unit, angles in degrees. (All fields are 64 bits: no padding.)
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LmlStripMetrics {
+    /// Index (into the `LmlCurves` the strips were built from) of the strip's level curve.
+    pub curve: u64,
+    /// Level value of that curve.
+    pub level: f64,
+    /// Length of the strip's centre line (the same in space and unrolled).
+    pub length: f64,
+    /// diff_θ: max over the inner centre points of |θ_measured − θ|, the angle between the
+    /// discrete binormal (paper Eq. 1) and the surface normal at the closest surface point.
+    pub max_diff_theta_degrees: f64,
+    /// e_straight: max distance of the unrolled centre points from their least-squares line,
+    /// divided by `length`.
+    pub e_straight: f64,
+    /// E_planar: Σ det(d̂_j, d̂_{j+1}, ê_j)² over the quads (unit rulings d, unit edges e).
+    pub e_planar: f64,
+    /// max |det(d̂_j, d̂_{j+1}, ê_j)|: the largest planarity residual of one quad.
+    pub max_planar: f64,
+    /// Appro: max distance of the centre points from the surface, in % of the surface's
+    /// bounding-box diagonal.
+    pub appro_percent: f64,
+    /// Quads whose orientation flips.
+    pub flipped_quads: u64,
+    /// The strip's `LML_STRIP_WARNING_*` bits (0: none).
+    pub warnings: LmlStripWarnings,
+}
+
+impl From<&RectifyingStrip> for LmlStripMetrics {
+    fn from(s: &RectifyingStrip) -> LmlStripMetrics {
+        let m = &s.metrics;
+        LmlStripMetrics {
+            curve: count(s.curve),
+            level: s.level,
+            length: m.length,
+            max_diff_theta_degrees: m.max_diff_theta_degrees,
+            e_straight: m.e_straight,
+            e_planar: m.e_planar,
+            max_planar: m.max_planar,
+            appro_percent: m.appro_percent,
+            flipped_quads: count(m.flipped_quads),
+            warnings: warning_bits(&s.warnings),
+        }
+    }
+}
+
+/// Table 4 over a whole pattern: maxima over its strips, and the sum of E_planar.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LmlPatternMetrics {
+    /// |Strip|: the number of strips built.
+    pub strip_count: u64,
+    /// Curves no strip could be built on (listed by `lml_strips_skipped`).
+    pub skipped_count: u64,
+    pub max_diff_theta_degrees: f64,
+    pub max_e_straight: f64,
+    /// Σ E_planar over all strips.
+    pub e_planar: f64,
+    pub max_planar: f64,
+    pub appro_percent: f64,
+    pub flipped_quads: u64,
+}
+
+impl LmlPatternMetrics {
+    pub(crate) fn new(m: &PatternMetrics, skipped: usize) -> LmlPatternMetrics {
+        LmlPatternMetrics {
+            strip_count: count(m.strip_count),
+            skipped_count: count(skipped),
+            max_diff_theta_degrees: m.max_diff_theta_degrees,
+            max_e_straight: m.max_e_straight,
+            e_planar: m.e_planar,
+            max_planar: m.max_planar,
+            appro_percent: m.appro_percent,
+            flipped_quads: count(m.flipped_quads),
+        }
+    }
+}
+
+/// A level curve no strip could be built on, and why.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LmlSkippedCurve {
+    /// Index of the curve in the `LmlCurves` the strips were built from.
+    pub curve: u64,
+    /// `LML_STRIP_WARNING_*` bits; at least one of TOO_FEW_POINTS, NON_FINITE_INPUT,
+    /// ZERO_LENGTH_SEGMENT, SOLVER_FAILED says why it was skipped.
+    pub warnings: LmlStripWarnings,
+}
+
+impl From<&SkippedCurve> for LmlSkippedCurve {
+    fn from(s: &SkippedCurve) -> LmlSkippedCurve {
+        LmlSkippedCurve { curve: count(s.curve), warnings: warning_bits(&s.warnings) }
+    }
+}
