@@ -10,8 +10,6 @@ const LEFT: f64 = 70.0;
 const RIGHT: f64 = 150.0;
 const TOP: f64 = 30.0;
 const GAP: f64 = 60.0;
-/// Values at or below this are drawn at it (log scale).
-const FLOOR: f64 = 1e-16;
 
 /// A plotted energy term: name, colour and how to read it.
 struct Series {
@@ -28,14 +26,15 @@ const OTHERS: [Series; 4] = [
     Series { name: "total", colour: "#000", value: |e| e.total },
 ];
 
-fn log_value(v: f64) -> f64 {
-    if v.is_finite() { v.max(FLOOR).log10() } else { FLOOR.log10() }
+/// `log10 v` for finite positive `v`; zero (e.g. E_frame at the start) has no place on a log scale.
+fn log_value(v: f64) -> Option<f64> {
+    (v.is_finite() && v > 0.0).then(|| v.log10())
 }
 
 /// One panel at vertical offset `top`.
 fn panel(svg: &mut Svg, top: f64, title: &str, series: &[Series], history: &[HistoryRow]) {
     let plot_width = WIDTH - LEFT - RIGHT;
-    let values = history.iter().flat_map(|h| series.iter().map(move |s| log_value((s.value)(&h.energies))));
+    let values = history.iter().flat_map(|h| series.iter().filter_map(move |s| log_value((s.value)(&h.energies))));
     let (low, high) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| (l.min(v), h.max(v)));
     let (low, high) = if low.is_finite() { (low.floor(), high.ceil().max(low.floor() + 1.0)) } else { (0.0, 1.0) };
     let first = history.first().map_or(0, |h| h.iteration) as f64;
@@ -60,7 +59,8 @@ fn panel(svg: &mut Svg, top: f64, title: &str, series: &[Series], history: &[His
         svg.text(LEFT - 8.0, y(exponent) + 4.0, "font-size=\"11\" text-anchor=\"end\" font-family=\"sans-serif\"", &format!("1e{exponent}"));
     }
     for (k, s) in series.iter().enumerate() {
-        let line = points(history.iter().map(|h| [x(h.iteration), y(log_value((s.value)(&h.energies)))]));
+        // Zero values sit on the panel's lower edge.
+        let line = points(history.iter().map(|h| [x(h.iteration), y(log_value((s.value)(&h.energies)).unwrap_or(low))]));
         svg.element(&format!("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\" points=\"{line}\"/>", s.colour));
         let ly = top + 20.0 + 18.0 * k as f64;
         svg.element(&format!("<line x1=\"{a}\" x2=\"{b}\" y1=\"{y}\" y2=\"{y}\" stroke=\"{}\" stroke-width=\"2\"/>", s.colour, a = super::num(WIDTH - RIGHT + 10.0), b = super::num(WIDTH - RIGHT + 30.0), y = super::num(ly)));

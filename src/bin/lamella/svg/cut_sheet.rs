@@ -5,6 +5,8 @@ use lamella::strips::Unrolling;
 
 /// Millimetres per metre (mesh units are metres).
 const MM: f64 = 1000.0;
+/// Width of the cut lines: a hairline of one device pixel (or the cutter's finest line) at any zoom.
+const CUT_LINE: &str = "stroke-width=\"1\" vector-effect=\"non-scaling-stroke\"";
 /// Margin around the sheet and gap between rows, in mm.
 const MARGIN_MM: f64 = 20.0;
 
@@ -52,7 +54,7 @@ pub fn cut_sheet_svg(pieces: &[CutPiece]) -> String {
     let row_height = |size: [f64; 2]| 1.5 * font + size[1] + MARGIN_MM;
     let sheet_height = laid.iter().map(|(_, size)| row_height(*size)).sum::<f64>() + MARGIN_MM;
     let mut svg = Svg::new(sheet_width, sheet_height, "mm", "lamella cut sheet (mm)");
-    svg.element("<g fill=\"none\" stroke=\"#d00\" stroke-width=\"0.5\">");
+    svg.element(&format!("<g fill=\"none\" stroke=\"#d00\" {CUT_LINE}>"));
     let mut top = MARGIN_MM;
     for ((outline, size), piece) in laid.iter().zip(pieces) {
         let y0 = top + 1.5 * font;
