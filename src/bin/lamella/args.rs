@@ -71,7 +71,7 @@ pub struct OutArgs {
 pub struct FieldFlags {
     /// Target angle θ between the strips' binormals and the surface normal, in degrees, 0 to 180
     /// (90 = geodesics, 0 = asymptotic curves) [default: 60].
-    #[arg(long, value_name = "DEGREES")]
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
     pub theta: Option<f64>,
     /// Upper bound on the total number of Levenberg–Marquardt iterations of the field, 1 to
     /// 100000 [default: 400].
@@ -86,7 +86,7 @@ pub struct StripFlags {
     #[arg(long, value_name = "N")]
     pub strips: Option<usize>,
     /// Strip width in metres (mesh units), > 0 [default: half the mean spacing of the level curves].
-    #[arg(long, value_name = "METRES")]
+    #[arg(long, value_name = "METRES", allow_negative_numbers = true)]
     pub width: Option<f64>,
 }
 
@@ -180,7 +180,7 @@ pub struct MetricsArgs {
     #[arg(long = "strips", value_name = "strips.obj")]
     pub strips_obj: PathBuf,
     /// Target angle θ the strips were designed for, in degrees, 0 to 180 [default: 60].
-    #[arg(long, value_name = "DEGREES")]
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
     pub theta: Option<f64>,
     /// Print JSON instead of a table.
     #[arg(long)]
