@@ -4,7 +4,7 @@
 
 mod cli_support;
 
-use cli_support::{assert_ok, lamella, parse_svg, polygon_points, read_json, small_roof, stdout, Scratch};
+use cli_support::{assert_ok, lamella, lamella_threads, parse_svg, polygon_points, read_json, small_roof, stdout, Scratch};
 use lamella::mesh::TriMesh;
 use std::path::Path;
 
@@ -144,4 +144,20 @@ fn help_explains_every_subcommand() {
         assert!(design.contains(flag), "design --help lacks {flag}");
     }
     assert!(design.contains("degrees") && design.contains("metres"), "units in design --help");
+}
+
+#[test]
+fn outputs_do_not_depend_on_the_thread_count() {
+    let dir = Scratch::new("threads");
+    let obj = small_roof(&dir, 300);
+    let m = obj.to_str().expect("utf-8");
+    for (threads, out) in [(1, "one"), (2, "two")] {
+        let args = ["design", "--mesh", m, "--strips", "3", "--max-iterations", "12", "--out", out, "-q"];
+        assert_ok(&lamella_threads(&dir.0, threads, &args));
+    }
+    for name in ["field.csv", "session.bin", "energies.csv", "curves.obj", "strips.obj", "rulings.obj", "unrolled.svg", "convergence.svg", "preview.svg"] {
+        let one = std::fs::read(dir.path("one").join(name)).expect("one");
+        let two = std::fs::read(dir.path("two").join(name)).expect("two");
+        assert!(one == two, "{name} differs between 1 and 2 threads");
+    }
 }

@@ -45,6 +45,16 @@ pub fn lamella(cwd: &Path, args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_lamella")).args(args).current_dir(cwd).output().expect("run lamella")
 }
 
+/// Runs `lamella` with `args` in `cwd` with a fixed number of worker threads.
+pub fn lamella_threads(cwd: &Path, threads: usize, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_lamella"))
+        .args(args)
+        .current_dir(cwd)
+        .env("RAYON_NUM_THREADS", threads.to_string())
+        .output()
+        .expect("run lamella")
+}
+
 pub fn stderr(output: &Output) -> String {
     String::from_utf8_lossy(&output.stderr).into_owned()
 }
