@@ -61,7 +61,7 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     summary(
         verbosity,
         &format!(
-            "{}\n{}\ndone in {:.1} s; wrote {target}/ (surface.obj, field.csv, session.bin, energies.csv, curves.obj, strips.obj, rulings.obj, report.json, unrolled.svg, convergence.svg, preview.svg)",
+            "{}\n{}\ndone in {:.1} s (field {field_seconds:.1} s, strips {strips_seconds:.1} s); wrote {target}/ (surface.obj, field.csv, session.bin, energies.csv, curves.obj, strips.obj, rulings.obj, report.json, unrolled.svg, convergence.svg, preview.svg)",
             field_summary(&solver),
             strips_summary(&run),
             started.elapsed().as_secs_f64()

@@ -9,11 +9,8 @@ use lamella::mesh::{TriMesh, Vec3};
 use lamella::strips::{unroll, PatternMetrics, StripGeometry, StripMetrics, SurfaceProjector};
 use serde_json::json;
 
-/// Table 4 of one stored strip.
+/// Table 4 of one stored strip (at least 2 rulings, as read).
 fn measure(projector: &SurfaceProjector, shape: &StripShape, theta: f64, diagonal: f64) -> CliResult<StripMetrics> {
-    if shape.left.len() < 2 {
-        return Err(CliError::bad_input(format!("{}: fewer than 2 rulings", shape.name)));
-    }
     let centre = shape.centre();
     let offsets = shape.offsets();
     let rulings: Vec<Vec3> = offsets

@@ -8,6 +8,8 @@ use std::path::{Path, PathBuf};
 pub struct OutputDir {
     target: PathBuf,
     staging: PathBuf,
+    /// Where a replaced target is moved before it is deleted.
+    replaced: PathBuf,
     force: bool,
     committed: bool,
 }
@@ -28,11 +30,13 @@ impl OutputDir {
             Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
             _ => PathBuf::from("."),
         };
-        let staging = parent.join(format!(".{}.tmp-{}", name.to_string_lossy(), std::process::id()));
+        let stem = format!(".{}.{}", name.to_string_lossy(), std::process::id());
+        let staging = parent.join(format!("{stem}.tmp"));
+        let replaced = parent.join(format!("{stem}.old"));
         // A leftover of a crashed run with the same process id is ours to replace.
         let _ = std::fs::remove_dir_all(&staging);
         std::fs::create_dir(&staging).map_err(|e| unwritable(target, &e))?;
-        Ok(OutputDir { target: target.to_path_buf(), staging, force, committed: false })
+        Ok(OutputDir { target: target.to_path_buf(), staging, replaced, force, committed: false })
     }
 
     /// Path of a file inside the staging directory.
@@ -59,10 +63,17 @@ impl OutputDir {
                     self.target.display()
                 )));
             }
-            let old = self.staging.with_extension("old");
-            std::fs::rename(&self.target, &old).map_err(|e| unwritable(&self.target, &e))?;
+            std::fs::rename(&self.target, &self.replaced).map_err(|e| unwritable(&self.target, &e))?;
             std::fs::rename(&self.staging, &self.target).map_err(|e| unwritable(&self.target, &e))?;
-            let _ = std::fs::remove_dir_all(&old);
+            let removed = if self.replaced.is_dir() {
+                std::fs::remove_dir_all(&self.replaced)
+            } else {
+                std::fs::remove_file(&self.replaced)
+            };
+            // The new output is in place; a leftover of the old one is worth a warning, not a failure.
+            if let Err(e) = removed {
+                eprintln!("lamella: warning: could not remove the replaced output {}: {e}", self.replaced.display());
+            }
         } else {
             std::fs::rename(&self.staging, &self.target).map_err(|e| unwritable(&self.target, &e))?;
         }

@@ -94,7 +94,7 @@ pub fn rulings_obj(pattern: &StripPattern) -> String {
 }
 
 /// Reads the strips of a strips.obj written by [`strips_obj`]: the `v` lines of each `g` group,
-/// alternately left and right. Faces and comments are not needed.
+/// alternately left and right, at least 2 pairs per strip. Faces and comments are not needed.
 pub fn read_strips_obj(path: &Path) -> CliResult<Vec<StripShape>> {
     let text = read_text(path)?;
     let bad = |line: usize, what: &str| CliError::bad_input(format!("{}: line {line}: {what}", path.display()));
@@ -135,6 +135,9 @@ pub fn read_strips_obj(path: &Path) -> CliResult<Vec<StripShape>> {
     }
     if shapes.is_empty() {
         return Err(CliError::bad_input(format!("{}: no strips (no `g` groups)", path.display())));
+    }
+    if let Some(short) = shapes.iter().find(|s| s.left.len() < 2) {
+        return Err(CliError::bad_input(format!("{}: strip `{}` has fewer than 2 rulings", path.display(), short.name)));
     }
     Ok(shapes)
 }

@@ -73,16 +73,21 @@ pub fn build_strips(mesh: &TriMesh, field: &[f64], theta: f64, count: usize, wid
     Ok(StripRun { curves, pattern, width, spacing })
 }
 
-/// One-line Table 4 summary of a pattern.
+/// Two-line summary of a pattern: strips, lengths and warnings, then Table 4.
 pub fn strips_summary(run: &StripRun) -> String {
     let m = &run.pattern.metrics;
-    let total: f64 = run.pattern.strips.iter().map(|s| s.metrics.length).sum();
+    let lengths = run.pattern.strips.iter().map(|s| s.metrics.length);
+    let total: f64 = lengths.clone().sum();
+    let shortest = lengths.clone().fold(f64::INFINITY, f64::min);
+    let longest = lengths.fold(0.0, f64::max);
+    let warned = run.pattern.strips.iter().filter(|s| !s.warnings.is_empty()).count();
+    let range = if m.strip_count > 0 { format!(" ({shortest:.2} m to {longest:.2} m)") } else { String::new() };
     format!(
-        "{} strips ({} curves skipped), width {:.3} m, total length {:.2} m; max diff θ {:.3}°, max e_straight {:.2e}, max planarity {:.2e}, Appro {:.3} %, flipped quads {}",
+        "{} strips, {} curves skipped, {warned} with warnings (--verbose lists them); width {:.3} m; total length {total:.2} m{range}\n\
+         Table 4: max diff θ {:.3}°, max e_straight {:.2e}, max planarity {:.2e}, Appro {:.3} %, flipped quads {}",
         m.strip_count,
         run.pattern.skipped.len(),
         run.width,
-        total,
         m.max_diff_theta_degrees,
         m.max_e_straight,
         m.max_planar,
