@@ -1,5 +1,5 @@
-//! unrolled.svg: the flat strips as a cut sheet in millimetres, one row per strip so that no two
-//! outlines overlap, each labelled with its id, length and width.
+//! unrolled.svg: the flat strips as a cut sheet in millimetres, packed in rows so that no two
+//! outlines (or labels) overlap, each labelled with its id, length and width.
 use super::{points, Svg};
 use lamella::strips::Unrolling;
 
@@ -44,25 +44,48 @@ fn placed(points: &[[f64; 2]], centre: &[[f64; 2]]) -> (Vec<[f64; 2]>, [f64; 2])
     (moved, [high[0] - low[0], high[1] - low[1]])
 }
 
-/// The cut sheet of `pieces`.
+/// Estimated advance of sans-serif text per character, in font sizes.
+const CHARACTER_WIDTH: f64 = 0.6;
+
+/// The cut sheet of `pieces`, packed in shelves: left to right in the given order, a new row
+/// when the next piece (or its label) would pass the widest piece's length.
 pub fn cut_sheet_svg(pieces: &[CutPiece]) -> String {
     let laid: Vec<(Vec<[f64; 2]>, [f64; 2])> = pieces.iter().map(|p| placed(&outline(p.unrolling), &p.unrolling.centre)).collect();
-    let widest = laid.iter().map(|(_, size)| size[0]).fold(0.0, f64::max);
     let tallest = laid.iter().map(|(_, size)| size[1]).fold(0.0, f64::max);
     let font = (0.3 * tallest).clamp(8.0, 200.0);
-    let sheet_width = widest.max(40.0 * font) + 2.0 * MARGIN_MM;
-    let row_height = |size: [f64; 2]| 1.5 * font + size[1] + MARGIN_MM;
-    let sheet_height = laid.iter().map(|(_, size)| row_height(*size)).sum::<f64>() + MARGIN_MM;
+    let labels: Vec<String> = pieces
+        .iter()
+        .zip(&laid)
+        .map(|(p, (_, size))| format!("{}  length {:.0} mm  width {:.0} mm", p.name, MM * p.unrolling.length, size[1]))
+        .collect();
+    // Each piece's slot: wide enough for its outline and its label.
+    let slots: Vec<f64> = laid
+        .iter()
+        .zip(&labels)
+        .map(|((_, size), label)| size[0].max(CHARACTER_WIDTH * font * label.chars().count() as f64))
+        .collect();
+    let inner_width = slots.iter().copied().fold(0.0, f64::max);
+    let mut origins = Vec::with_capacity(pieces.len());
+    let (mut x, mut top, mut row_height) = (0.0, MARGIN_MM, 0.0_f64);
+    for ((_, size), slot) in laid.iter().zip(&slots) {
+        if x > 0.0 && x + slot > inner_width {
+            top += row_height + MARGIN_MM;
+            x = 0.0;
+            row_height = 0.0;
+        }
+        origins.push([MARGIN_MM + x, top]);
+        x += slot + MARGIN_MM;
+        row_height = row_height.max(1.5 * font + size[1]);
+    }
+    let sheet_width = inner_width + 2.0 * MARGIN_MM;
+    let sheet_height = top + row_height + MARGIN_MM;
     let mut svg = Svg::new(sheet_width, sheet_height, "mm", "lamella cut sheet (mm)");
     svg.element(&format!("<g fill=\"none\" stroke=\"#d00\" {CUT_LINE}>"));
-    let mut top = MARGIN_MM;
-    for ((outline, size), piece) in laid.iter().zip(pieces) {
-        let y0 = top + 1.5 * font;
-        let shifted = outline.iter().map(|p| [MARGIN_MM + p[0], y0 + p[1]]);
+    let label_style = format!("class=\"label\" font-size=\"{}\" fill=\"#000\" stroke=\"none\" font-family=\"sans-serif\"", super::num(font));
+    for (((outline, _), piece), (origin, label)) in laid.iter().zip(pieces).zip(origins.iter().zip(&labels)) {
+        let shifted = outline.iter().map(|p| [origin[0] + p[0], origin[1] + 1.5 * font + p[1]]);
         svg.element(&format!("<polygon class=\"strip\" id=\"{}\" points=\"{}\"/>", piece.name, points(shifted)));
-        let label = format!("{}  length {:.0} mm  width {:.0} mm", piece.name, MM * piece.unrolling.length, size[1]);
-        svg.text(MARGIN_MM, top + font, &format!("class=\"label\" font-size=\"{}\" fill=\"#000\" stroke=\"none\" font-family=\"sans-serif\"", super::num(font)), &label);
-        top += row_height(*size);
+        svg.text(origin[0], origin[1] + font, &label_style, label);
     }
     svg.element("</g>");
     svg.finish()
