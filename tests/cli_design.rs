@@ -16,7 +16,7 @@ fn bounding_box(points: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
 
 /// Checks the cut sheet: one polygon and one label per strip, no two outlines' boxes overlapping,
 /// and each label's length and width matching the outline (mm).
-fn check_cut_sheet(path: &Path, strip_names: &[String]) {
+fn check_cut_sheet(path: &Path, strip_names: &[String], lengths_m: &[f64]) {
     let root = parse_svg(path);
     assert!(root.attribute("width").is_some_and(|w| w.ends_with("mm")), "sheet in millimetres");
     let mut polygons: Vec<&Element> = Vec::new();
@@ -32,9 +32,17 @@ fn check_cut_sheet(path: &Path, strip_names: &[String]) {
             assert!(apart, "outlines overlap: {a:?} {b:?}");
         }
     }
-    for (name, (polygon, label)) in strip_names.iter().zip(polygons.iter().zip(&labels)) {
+    for ((name, length), (polygon, label)) in strip_names.iter().zip(lengths_m).zip(polygons.iter().zip(&labels)) {
         assert_eq!(polygon.attribute("id"), Some(name.as_str()));
-        assert!(label.text.starts_with(name.as_str()) && label.text.contains("length") && label.text.contains("mm"), "label {:?}", label.text);
+        assert!(label.text.starts_with(name.as_str()) && label.text.contains("width") && label.text.ends_with("mm"), "label {:?}", label.text);
+        // "length N mm": the strip's length from report.json, in millimetres.
+        let words: Vec<&str> = label.text.split_whitespace().collect();
+        let at = words.iter().position(|w| *w == "length").expect("length in label");
+        let mm: f64 = words[at + 1].parse().expect("length number");
+        assert!((mm - 1000.0 * length).abs() <= 0.5, "{name}: label {mm} mm, report {length} m");
+        // The outline spans at least the centre line's length (the strip is straight when flat).
+        let (low, high) = bounding_box(&polygon_points(polygon));
+        assert!(high[0] - low[0] >= mm - 1.0, "{name}: outline {} mm long", high[0] - low[0]);
     }
 }
 
@@ -66,7 +74,8 @@ fn default_run_meets_the_quality_bounds_and_writes_well_formed_files() {
     assert!(report["timings_s"]["total"].as_f64().expect("timing") > 0.0);
 
     let names: Vec<String> = strips.iter().map(|s| s["name"].as_str().expect("name").to_string()).collect();
-    check_cut_sheet(&out.join("unrolled.svg"), &names);
+    let lengths: Vec<f64> = strips.iter().map(|s| s["length_m"].as_f64().expect("length")).collect();
+    check_cut_sheet(&out.join("unrolled.svg"), &names, &lengths);
     let convergence = parse_svg(&out.join("convergence.svg"));
     let mut lines = Vec::new();
     convergence.descendants("polyline", &mut lines);

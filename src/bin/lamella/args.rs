@@ -149,8 +149,9 @@ pub struct StripsArgs {
     /// The field, one value per mesh vertex (field.csv of `field` or `design`).
     #[arg(long = "field", value_name = "field.csv")]
     pub field_csv: PathBuf,
-    #[command(flatten)]
-    pub field: FieldFlags,
+    /// Target angle θ of the field's curve family, in degrees, 0 to 180 [default: 60].
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
+    pub theta: Option<f64>,
     #[command(flatten)]
     pub strips: StripFlags,
     #[command(flatten)]

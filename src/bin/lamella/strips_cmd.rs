@@ -1,6 +1,6 @@
 //! `lamella strips`: level curves of the field at equally spaced values, resampled to the mesh's
 //! edge length, and the rectifying strips along them (paper Sec. 3.4).
-use crate::args::StripsArgs;
+use crate::args::{FieldFlags, StripsArgs};
 use crate::config::{Flags, Settings};
 use crate::error::{CliError, CliResult};
 use crate::field_files::read_field_csv;
@@ -128,10 +128,11 @@ pub fn read_field_for(mesh: &TriMesh, path: &std::path::Path) -> CliResult<Vec<f
 pub fn run(args: &StripsArgs) -> CliResult<()> {
     let started = Instant::now();
     let verbosity = Verbosity::from(args.verbosity);
+    let field_flags = FieldFlags { theta: args.theta, max_iterations: None };
     let settings = Settings::resolve(Flags {
         mesh: Some(&args.mesh),
         out: Some(&args.out),
-        field: Some(&args.field),
+        field: Some(&field_flags),
         strips: Some(&args.strips),
         config: Some(&args.config),
     })?;
