@@ -161,3 +161,23 @@ fn outputs_do_not_depend_on_the_thread_count() {
         assert!(one == two, "{name} differs between 1 and 2 threads");
     }
 }
+
+#[test]
+fn progress_is_plain_lines_off_a_terminal_every_iteration_verbose_and_silent_quiet() {
+    let dir = Scratch::new("progress");
+    let obj = small_roof(&dir, 200);
+    let m = obj.to_str().expect("utf-8");
+    let plain = lamella(&dir.0, &["field", "--mesh", m, "--max-iterations", "10", "--out", "plain"]);
+    assert_ok(&plain);
+    let log = cli_support::stderr(&plain);
+    assert!(!log.contains('\r'), "no progress bar when stderr is not a terminal");
+    assert_eq!(log.lines().filter(|l| l.starts_with("iteration")).count(), 1, "one line per 10 iterations:\n{log}");
+    assert!(stdout(&plain).contains("after 10 iterations"), "summary on stdout");
+    let verbose = lamella(&dir.0, &["field", "--mesh", m, "--max-iterations", "10", "--out", "verbose", "--verbose"]);
+    assert_ok(&verbose);
+    let log = cli_support::stderr(&verbose);
+    assert_eq!(log.lines().filter(|l| l.starts_with("iteration") && l.contains("E_grad")).count(), 10, "{log}");
+    let quiet = lamella(&dir.0, &["field", "--mesh", m, "--max-iterations", "10", "--out", "quiet", "--quiet"]);
+    assert_ok(&quiet);
+    assert!(quiet.stdout.is_empty() && quiet.stderr.is_empty());
+}
