@@ -29,17 +29,15 @@ impl TriMesh {
     pub fn parse_obj(text: &str) -> Result<TriMesh, MeshError> {
         let content = parse_content(text)?;
         let ObjContent { positions, vertex_lines, faces, face_lines } = content;
-        TriMesh::from_vertices_and_faces(positions, faces).map_err(|error| {
-            let line = match error.culprit() {
-                Some(Culprit::Vertex(v)) => vertex_lines.get(v).copied(),
-                Some(Culprit::Face(f)) => face_lines.get(f).copied(),
-                None => None,
-            };
-            match line {
-                Some(line) => MeshError::ObjLine { line, error: Box::new(error) },
-                None => error,
-            }
-        })
+        TriMesh::from_vertices_and_faces(positions, faces).map_err(|error| with_line(error, &vertex_lines, &face_lines))
+    }
+
+    /// Every problem of the mesh in OBJ text (see [`crate::mesh::diagnose`]), each naming its OBJ
+    /// line where it concerns one vertex or face; empty if [`TriMesh::parse_obj`] accepts it.
+    /// A malformed line is returned as the error.
+    pub fn diagnose_obj(text: &str) -> Result<Vec<MeshError>, MeshError> {
+        let ObjContent { positions, vertex_lines, faces, face_lines } = parse_content(text)?;
+        Ok(super::diagnose(&positions, &faces).into_iter().map(|e| with_line(e, &vertex_lines, &face_lines)).collect())
     }
 
     /// Reads and parses an OBJ file (invalid UTF-8 is replaced, which only matters in comments).
@@ -64,6 +62,19 @@ impl TriMesh {
             writeln!(out, "f {} {} {}", u64::from(f[0]) + 1, u64::from(f[1]) + 1, u64::from(f[2]) + 1)?;
         }
         out.flush()
+    }
+}
+
+/// Wraps a mesh error about one vertex or face in [`MeshError::ObjLine`] with its source line.
+fn with_line(error: MeshError, vertex_lines: &[usize], face_lines: &[usize]) -> MeshError {
+    let line = match error.culprit() {
+        Some(Culprit::Vertex(v)) => vertex_lines.get(v).copied(),
+        Some(Culprit::Face(f)) => face_lines.get(f).copied(),
+        None => None,
+    };
+    match line {
+        Some(line) => MeshError::ObjLine { line, error: Box::new(error) },
+        None => error,
     }
 }
 

@@ -55,7 +55,7 @@ impl PatternMetrics {
 }
 
 /// Where and how a strip lies, as the metrics need it.
-pub(crate) struct StripGeometry<'a> {
+pub struct StripGeometry<'a> {
     pub centre: &'a [Vec3],
     /// Unit rulings.
     pub rulings: &'a [Vec3],
@@ -67,7 +67,9 @@ pub(crate) struct StripGeometry<'a> {
 }
 
 impl StripMetrics {
-    pub(crate) fn measure(strip: &StripGeometry, theta_degrees: f64, diagonal: f64) -> StripMetrics {
+    /// The Table 4 measures of a strip lying at `strip`, for target angle `theta_degrees`;
+    /// `appro_percent` relates the distances to `diagonal` (the surface's bounding-box diagonal).
+    pub fn measure(strip: &StripGeometry, theta_degrees: f64, diagonal: f64) -> StripMetrics {
         let edges = unit_edges(strip.centre);
         let binormals = discrete_binormals(strip.centre);
         let mut metrics = StripMetrics {

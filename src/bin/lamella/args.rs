@@ -1,0 +1,191 @@
+//! Command-line syntax: the subcommands and their flags, each documented with default and unit.
+use clap::{Args, Parser, Subcommand};
+use std::path::PathBuf;
+
+/// Rectifying strip patterns (Wang, Wang, Schling, Pottmann 2023): pseudo-geodesic curve families
+/// on a triangle mesh and the developable strips that follow them.
+///
+/// Without a subcommand: designs a θ = 60° pattern on the built-in hall roof into ./lamella-out/
+/// (the same as `lamella design`).
+#[derive(Parser, Debug)]
+#[command(name = "lamella", version, args_conflicts_with_subcommands = true)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+    #[command(flatten)]
+    pub design: DesignArgs,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// The whole pipeline: field → level curves → rectifying strips → cut sheet, plots, report.
+    Design(DesignArgs),
+    /// Mesh validation report: counts, boundary loops, disk or not, bounding box, mean edge
+    /// length and every problem found.
+    Info(InfoArgs),
+    /// Optimise the scalar field whose level sets are the pseudo-geodesics, or continue a saved
+    /// session (--resume). Writes field.csv, session.bin, energies.csv, convergence.svg, report.json.
+    Field(FieldArgs),
+    /// Level curves of a field and the rectifying strips along them. Writes curves.obj,
+    /// strips.obj, rulings.obj, preview.svg, report.json.
+    Strips(StripsArgs),
+    /// Lay the strips of a strips.obj flat into a cut sheet (unrolled.svg, millimetres).
+    Unroll(UnrollArgs),
+    /// Table 4 quality measures of the strips in a strips.obj.
+    Metrics(MetricsArgs),
+}
+
+/// Progress and summary output.
+#[derive(Args, Debug, Clone, Copy, Default)]
+pub struct VerbosityArgs {
+    /// Print nothing but errors.
+    #[arg(short, long, conflicts_with = "verbose")]
+    pub quiet: bool,
+    /// Print every iteration with all energy terms, and every strip warning.
+    #[arg(short, long)]
+    pub verbose: bool,
+}
+
+/// Where the input surface comes from.
+#[derive(Args, Debug, Clone, Default)]
+pub struct MeshArgs {
+    /// Input surface, a triangle mesh in OBJ format, in metres (a topological disk, possibly with
+    /// holes) [default: the built-in hall roof, 40 m × 24 m, about 3000 vertices].
+    #[arg(long, value_name = "M.obj")]
+    pub mesh: Option<PathBuf>,
+}
+
+/// The output directory, written to a temporary directory and moved into place at the end.
+#[derive(Args, Debug, Clone, Default)]
+pub struct OutArgs {
+    /// Output directory [default: lamella-out].
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Replace an existing output directory (otherwise it is refused).
+    #[arg(long)]
+    pub force: bool,
+}
+
+/// Parameters of the field optimisation.
+#[derive(Args, Debug, Clone, Default)]
+pub struct FieldFlags {
+    /// Target angle θ between the strips' binormals and the surface normal, in degrees, 0 to 180
+    /// (90 = geodesics, 0 = asymptotic curves) [default: 60].
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
+    pub theta: Option<f64>,
+    /// Upper bound on the total number of Levenberg–Marquardt iterations of the field, 1 to
+    /// 100000 [default: 400].
+    #[arg(long, value_name = "N")]
+    pub max_iterations: Option<usize>,
+}
+
+/// Parameters of the strips.
+#[derive(Args, Debug, Clone, Default)]
+pub struct StripFlags {
+    /// Number of strips: level curves at equally spaced field values, 1 to 1000 [default: 20].
+    #[arg(long, value_name = "N")]
+    pub strips: Option<usize>,
+    /// Strip width in metres (mesh units), > 0 [default: half the mean spacing of the level curves].
+    #[arg(long, value_name = "METRES", allow_negative_numbers = true)]
+    pub width: Option<f64>,
+}
+
+/// Parameters from a TOML file.
+#[derive(Args, Debug, Clone, Default)]
+pub struct ConfigArgs {
+    /// TOML file with any of: mesh, out, theta, max_iterations, strips, width (same meanings and
+    /// units as the flags; a flag wins over the file) [default: none].
+    #[arg(long, value_name = "design.toml")]
+    pub config: Option<PathBuf>,
+}
+
+#[derive(Args, Debug, Clone, Default)]
+pub struct DesignArgs {
+    #[command(flatten)]
+    pub mesh: MeshArgs,
+    #[command(flatten)]
+    pub field: FieldFlags,
+    #[command(flatten)]
+    pub strips: StripFlags,
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub config: ConfigArgs,
+    #[command(flatten)]
+    pub verbosity: VerbosityArgs,
+}
+
+#[derive(Args, Debug, Clone)]
+pub struct InfoArgs {
+    /// The OBJ file to check.
+    #[arg(value_name = "M.obj")]
+    pub mesh: PathBuf,
+}
+
+#[derive(Args, Debug, Clone, Default)]
+pub struct FieldArgs {
+    #[command(flatten)]
+    pub mesh: MeshArgs,
+    #[command(flatten)]
+    pub field: FieldFlags,
+    /// Continue the saved session (session.bin of an earlier `field` or `design` run) up to
+    /// --max-iterations in total; its mesh and θ are used, and energies.csv beside it extends
+    /// the history [default: start a new optimisation from the coordinate along the longest
+    /// bounding-box axis].
+    #[arg(long, value_name = "session.bin", conflicts_with_all = ["mesh", "theta"])]
+    pub resume: Option<PathBuf>,
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub config: ConfigArgs,
+    #[command(flatten)]
+    pub verbosity: VerbosityArgs,
+}
+
+#[derive(Args, Debug, Clone, Default)]
+pub struct StripsArgs {
+    #[command(flatten)]
+    pub mesh: MeshArgs,
+    /// The field, one value per mesh vertex (field.csv of `field` or `design`).
+    #[arg(long = "field", value_name = "field.csv")]
+    pub field_csv: PathBuf,
+    /// Target angle θ of the field's curve family, in degrees, 0 to 180 [default: 60].
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
+    pub theta: Option<f64>,
+    #[command(flatten)]
+    pub strips: StripFlags,
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub config: ConfigArgs,
+    #[command(flatten)]
+    pub verbosity: VerbosityArgs,
+}
+
+#[derive(Args, Debug, Clone, Default)]
+pub struct UnrollArgs {
+    /// The strips (strips.obj of `strips` or `design`).
+    #[arg(long = "strips", value_name = "strips.obj")]
+    pub strips_obj: PathBuf,
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub verbosity: VerbosityArgs,
+}
+
+#[derive(Args, Debug, Clone, Default)]
+pub struct MetricsArgs {
+    #[command(flatten)]
+    pub mesh: MeshArgs,
+    /// The strips (strips.obj of `strips` or `design`).
+    #[arg(long = "strips", value_name = "strips.obj")]
+    pub strips_obj: PathBuf,
+    /// Target angle θ the strips were designed for, in degrees, 0 to 180 [default: 60].
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
+    pub theta: Option<f64>,
+    /// Print JSON instead of a table.
+    #[arg(long)]
+    pub json: bool,
+    #[command(flatten)]
+    pub verbosity: VerbosityArgs,
+}

@@ -1,0 +1,71 @@
+//! `lamella design` (and `lamella` without arguments): the whole pipeline of the paper on one
+//! surface: field (Sec. 3.2) → level curves → rectifying strips (Sec. 3.4) → cut sheet, plots and
+//! report, into one output directory.
+use crate::args::DesignArgs;
+use crate::config::{Flags, Settings};
+use crate::error::{CliError, CliResult};
+use crate::field_cmd::{field_summary, initial_field, new_solver, optimise, write_field_files};
+use crate::field_files::HistoryRow;
+use crate::mesh_input::{load_mesh, mesh_name};
+use crate::output_dir::OutputDir;
+use crate::progress::{note, summary, Verbosity};
+use crate::report_json::{self, Timings};
+use crate::strip_obj::strip_name;
+use crate::strips_cmd::{build_strips, strips_summary, warning_lines, write_strip_files};
+use crate::svg::cut_sheet::{cut_sheet_svg, CutPiece};
+use std::time::Instant;
+
+pub fn run(args: &DesignArgs) -> CliResult<()> {
+    let started = Instant::now();
+    let verbosity = Verbosity::from(args.verbosity);
+    let settings = Settings::resolve(Flags {
+        mesh: Some(&args.mesh),
+        out: Some(&args.out),
+        field: Some(&args.field),
+        strips: Some(&args.strips),
+        config: Some(&args.config),
+    })?;
+    let mesh = load_mesh(settings.mesh.as_deref())?;
+    let name = mesh_name(settings.mesh.as_deref());
+    let out = OutputDir::create(&settings.out, settings.force)?;
+    note(
+        verbosity,
+        &format!("{name}: {} vertices, {} triangles; θ = {}°, {} strips", mesh.vertex_count(), mesh.face_count(), settings.theta, settings.strips),
+    );
+
+    let mut solver = new_solver(&mesh, &initial_field(&mesh), settings.theta)?;
+    let mut history = vec![HistoryRow::of(solver.report())];
+    optimise(&mut solver, settings.max_iterations, &mut history, verbosity)?;
+    let field_seconds = started.elapsed().as_secs_f64();
+
+    let strips_started = Instant::now();
+    let run = build_strips(&mesh, &solver.field(), settings.theta, settings.strips, settings.width)?;
+    let strips_seconds = strips_started.elapsed().as_secs_f64();
+    if verbosity == Verbosity::Verbose {
+        warning_lines(&run).iter().for_each(|w| eprintln!("{w}"));
+    }
+
+    let mut surface = Vec::new();
+    mesh.write_obj(&mut surface).map_err(|e| CliError::internal(format!("surface.obj: {e}")))?;
+    out.write("surface.obj", surface)?;
+    write_field_files(&out, &solver, &history)?;
+    write_strip_files(&out, &mesh, &run)?;
+    let pieces: Vec<CutPiece> =
+        run.pattern.strips.iter().enumerate().map(|(id, s)| CutPiece { name: strip_name(id), unrolling: &s.unrolling }).collect();
+    out.write("unrolled.svg", cut_sheet_svg(&pieces))?;
+    let timings = Timings { field: field_seconds, strips: strips_seconds, total: started.elapsed().as_secs_f64() };
+    let parameters = report_json::parameters(&settings, settings.theta, &name);
+    out.write("report.json", report_json::document(&parameters, Some((&solver, &history)), Some(&run), &timings))?;
+    let target = out.target().display().to_string();
+    out.commit()?;
+    summary(
+        verbosity,
+        &format!(
+            "{}\n{}\ndone in {:.1} s (field {field_seconds:.1} s, strips {strips_seconds:.1} s); wrote {target}/ (surface.obj, field.csv, session.bin, energies.csv, curves.obj, strips.obj, rulings.obj, report.json, unrolled.svg, convergence.svg, preview.svg)",
+            field_summary(&solver),
+            strips_summary(&run),
+            started.elapsed().as_secs_f64()
+        ),
+    );
+    Ok(())
+}

@@ -1,0 +1,118 @@
+//! preview.svg: an orthographic, flat-shaded view of the surface with the strips coloured per
+//! strip, painted back to front, from a camera above and in front of the surface (z up).
+use super::{points, Svg};
+use lamella::mesh::{TriMesh, Vec3};
+use lamella::strips::StripPattern;
+
+const IMAGE_WIDTH: f64 = 1000.0;
+const MARGIN: f64 = 20.0;
+/// Camera direction (towards the viewer): azimuth and elevation in degrees.
+const AZIMUTH: f64 = -60.0;
+const ELEVATION: f64 = 30.0;
+const SURFACE_RGB: [f64; 3] = [0.85, 0.85, 0.82];
+
+/// An orthographic camera looking along `-view`, z up.
+struct Camera {
+    view: Vec3,
+    right: Vec3,
+    up: Vec3,
+    light: Vec3,
+}
+
+impl Camera {
+    fn default_view() -> Camera {
+        let (az, el) = (AZIMUTH.to_radians(), ELEVATION.to_radians());
+        let view = Vec3::new(el.cos() * az.cos(), el.cos() * az.sin(), el.sin());
+        let right = (-view).cross(&Vec3::z()).normalize();
+        let up = right.cross(&-view);
+        let light = (view + Vec3::z() + right * 0.5).normalize();
+        Camera { view, right, up, light }
+    }
+
+    /// Screen coordinates before fitting (y up).
+    fn project(&self, p: &Vec3) -> [f64; 2] {
+        [p.dot(&self.right), p.dot(&self.up)]
+    }
+
+    /// Lambert shading of a facet with normal `n` (two-sided).
+    fn shade(&self, rgb: [f64; 3], n: &Vec3) -> String {
+        let light = n.try_normalize(0.0).map_or(0.5, |n| n.dot(&self.light).abs());
+        let k = 0.35 + 0.65 * light;
+        let [r, g, b] = rgb.map(|c| (255.0 * c * k).round().clamp(0.0, 255.0) as u8);
+        format!("#{r:02x}{g:02x}{b:02x}")
+    }
+}
+
+/// Distinct colour of strip `id` (golden-angle hues).
+fn strip_rgb(id: usize) -> [f64; 3] {
+    let hue = (id as f64 * 137.507_764) % 360.0 / 60.0;
+    let x = 1.0 - (hue % 2.0 - 1.0).abs();
+    let [r, g, b] = match hue as usize {
+        0 => [1.0, x, 0.0],
+        1 => [x, 1.0, 0.0],
+        2 => [0.0, 1.0, x],
+        3 => [0.0, x, 1.0],
+        4 => [x, 0.0, 1.0],
+        _ => [1.0, 0.0, x],
+    };
+    // Saturation 0.75, value 0.95.
+    [r, g, b].map(|c| 0.95 * (0.25 + 0.75 * c))
+}
+
+/// A facet to paint: corners, fill and outline.
+struct Facet {
+    corners: Vec<Vec3>,
+    fill: String,
+    stroke: String,
+    depth: f64,
+}
+
+/// The preview image of `mesh` with `pattern`.
+pub fn preview_svg(mesh: &TriMesh, pattern: &StripPattern) -> String {
+    let camera = Camera::default_view();
+    let mut facets: Vec<Facet> = Vec::new();
+    for (f, face) in mesh.faces().iter().enumerate() {
+        let corners: Vec<Vec3> = face.iter().map(|&v| mesh.positions()[v as usize]).collect();
+        let fill = camera.shade(SURFACE_RGB, &mesh.face_normals()[f]);
+        facets.push(Facet { depth: 0.0, stroke: fill.clone(), fill, corners });
+    }
+    for (id, strip) in pattern.strips.iter().enumerate() {
+        for j in 0..strip.left.len().min(strip.right.len()).saturating_sub(1) {
+            let corners = vec![strip.left[j], strip.left[j + 1], strip.right[j + 1], strip.right[j]];
+            let normal = (corners[1] - corners[3]).cross(&(corners[2] - corners[0]));
+            let fill = camera.shade(strip_rgb(id), &normal);
+            facets.push(Facet { depth: 0.0, stroke: "#333".into(), fill, corners });
+        }
+    }
+    for facet in &mut facets {
+        let n = facet.corners.len().max(1) as f64;
+        facet.depth = facet.corners.iter().map(|c| c.dot(&camera.view)).sum::<f64>() / n;
+    }
+    // Far to near; ties keep the input order (stable sort), so the image is deterministic.
+    facets.sort_by(|a, b| a.depth.total_cmp(&b.depth));
+    let projected: Vec<Vec<[f64; 2]>> = facets.iter().map(|f| f.corners.iter().map(|c| camera.project(c)).collect()).collect();
+    let (mut low, mut high) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in projected.iter().flatten() {
+        for k in 0..2 {
+            low[k] = low[k].min(p[k]);
+            high[k] = high[k].max(p[k]);
+        }
+    }
+    let extent = [(high[0] - low[0]).max(f64::MIN_POSITIVE), (high[1] - low[1]).max(f64::MIN_POSITIVE)];
+    let scale = if low[0].is_finite() { (IMAGE_WIDTH - 2.0 * MARGIN) / extent[0] } else { 1.0 };
+    let height = if low[0].is_finite() { extent[1] * scale + 2.0 * MARGIN } else { 2.0 * MARGIN };
+    let to_screen = |p: &[f64; 2]| [MARGIN + (p[0] - low[0]) * scale, MARGIN + (high[1] - p[1]) * scale];
+    let mut svg = Svg::new(IMAGE_WIDTH, height, "", "lamella preview: surface and strips");
+    svg.element(&format!("<rect width=\"{}\" height=\"{}\" fill=\"#fff\"/>", super::num(IMAGE_WIDTH), super::num(height)));
+    svg.element("<g stroke-width=\"0.4\" stroke-linejoin=\"round\">");
+    for (facet, corners) in facets.iter().zip(&projected) {
+        svg.element(&format!(
+            "<polygon fill=\"{}\" stroke=\"{}\" points=\"{}\"/>",
+            facet.fill,
+            facet.stroke,
+            points(corners.iter().map(to_screen))
+        ));
+    }
+    svg.element("</g>");
+    svg.finish()
+}

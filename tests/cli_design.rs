@@ -1,0 +1,103 @@
+//! The default run (`lamella` without arguments, the README's first command): its report.json
+//! meets the paper's quality bounds, its SVGs are well-formed, its cut sheet has one labelled,
+//! non-overlapping outline per strip; an existing output directory needs --force.
+
+mod cli_support;
+
+use cli_support::{assert_ok, lamella, parse_svg, polygon_points, read_json, stderr, Element, Scratch};
+use std::path::Path;
+
+/// Axis-aligned bounding box of points: (min, max).
+fn bounding_box(points: &[[f64; 2]]) -> ([f64; 2], [f64; 2]) {
+    points.iter().fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(lo, hi), p| {
+        ([lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])])
+    })
+}
+
+/// Checks the cut sheet: one polygon and one label per strip, no two outlines' boxes overlapping,
+/// and each label's length and width matching the outline (mm).
+fn check_cut_sheet(path: &Path, strip_names: &[String], lengths_m: &[f64]) {
+    let root = parse_svg(path);
+    assert!(root.attribute("width").is_some_and(|w| w.ends_with("mm")), "sheet in millimetres");
+    let mut polygons: Vec<&Element> = Vec::new();
+    root.descendants("polygon", &mut polygons);
+    let mut labels: Vec<&Element> = Vec::new();
+    root.descendants("text", &mut labels);
+    assert_eq!(polygons.len(), strip_names.len(), "one outline per strip");
+    assert_eq!(labels.len(), strip_names.len(), "one label per strip");
+    let boxes: Vec<_> = polygons.iter().map(|p| bounding_box(&polygon_points(p))).collect();
+    for (i, a) in boxes.iter().enumerate() {
+        for b in &boxes[i + 1..] {
+            let apart = a.1[0] <= b.0[0] || b.1[0] <= a.0[0] || a.1[1] <= b.0[1] || b.1[1] <= a.0[1];
+            assert!(apart, "outlines overlap: {a:?} {b:?}");
+        }
+    }
+    for ((name, length), (polygon, label)) in strip_names.iter().zip(lengths_m).zip(polygons.iter().zip(&labels)) {
+        assert_eq!(polygon.attribute("id"), Some(name.as_str()));
+        assert!(label.text.starts_with(name.as_str()) && label.text.contains("width") && label.text.ends_with("mm"), "label {:?}", label.text);
+        // "length N mm": the strip's length from report.json, in millimetres.
+        let words: Vec<&str> = label.text.split_whitespace().collect();
+        let at = words.iter().position(|w| *w == "length").expect("length in label");
+        let mm: f64 = words[at + 1].parse().expect("length number");
+        assert!((mm - 1000.0 * length).abs() <= 0.5, "{name}: label {mm} mm, report {length} m");
+        // The outline spans at least the centre line's length (the strip is straight when flat).
+        let (low, high) = bounding_box(&polygon_points(polygon));
+        assert!(high[0] - low[0] >= mm - 1.0, "{name}: outline {} mm long", high[0] - low[0]);
+    }
+}
+
+#[test]
+fn default_run_meets_the_quality_bounds_and_writes_well_formed_files() {
+    let dir = Scratch::new("default");
+    let output = lamella(&dir.0, &[]);
+    assert_ok(&output);
+    let out = dir.path("lamella-out");
+    for name in ["field.csv", "curves.obj", "strips.obj", "rulings.obj", "report.json", "unrolled.svg", "convergence.svg", "preview.svg", "session.bin"] {
+        assert!(out.join(name).is_file(), "missing {name}");
+    }
+    let report = read_json(&out.join("report.json"));
+    let strips = report["strips"]["strips"].as_array().expect("strips array");
+    assert!(strips.len() >= 20, "20 levels give at least 20 strips, got {}", strips.len());
+    for s in strips {
+        let diff = s["max_diff_theta_degrees"].as_f64().expect("diff θ");
+        let straight = s["e_straight"].as_f64().expect("e_straight");
+        assert!(diff <= 2.0, "{}: max diff θ {diff}°", s["name"]);
+        assert!(straight <= 1e-3, "{}: e_straight {straight}", s["name"]);
+        assert!(s["length_m"].as_f64().expect("length") > 0.0);
+    }
+    assert_eq!(report["strips"]["overall"]["strip_count"].as_u64(), Some(strips.len() as u64));
+    // Per-iteration history: iterations 0, 1, …, n without gaps.
+    let history = report["field"]["history"].as_array().expect("history");
+    let iterations = report["field"]["iterations"].as_u64().expect("iterations");
+    assert_eq!(history.len() as u64, iterations + 1);
+    assert!(history.iter().enumerate().all(|(i, h)| h["iteration"].as_u64() == Some(i as u64)));
+    assert!(report["timings_s"]["total"].as_f64().expect("timing") > 0.0);
+
+    let names: Vec<String> = strips.iter().map(|s| s["name"].as_str().expect("name").to_string()).collect();
+    let lengths: Vec<f64> = strips.iter().map(|s| s["length_m"].as_f64().expect("length")).collect();
+    check_cut_sheet(&out.join("unrolled.svg"), &names, &lengths);
+    let convergence = parse_svg(&out.join("convergence.svg"));
+    let mut lines = Vec::new();
+    convergence.descendants("polyline", &mut lines);
+    assert_eq!(lines.len(), 5, "E_angle and the four other curves");
+    let preview = parse_svg(&out.join("preview.svg"));
+    let mut facets = Vec::new();
+    preview.descendants("polygon", &mut facets);
+    assert!(facets.len() > 3000, "surface triangles and strip quads");
+
+    // The existing directory is refused without --force and left as it was.
+    let before = std::fs::read(out.join("report.json")).expect("report");
+    let refused = lamella(&dir.0, &["design", "--max-iterations", "1", "--strips", "1"]);
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(stderr(&refused).contains("already exists") && stderr(&refused).contains("--force"), "{}", stderr(&refused));
+    assert_eq!(std::fs::read(out.join("report.json")).expect("report"), before);
+    let forced = lamella(&dir.0, &["design", "--max-iterations", "3", "--strips", "2", "--width", "0.3", "--force", "--quiet"]);
+    assert_ok(&forced);
+    assert!(forced.stdout.is_empty(), "--quiet prints nothing");
+    let replaced = read_json(&out.join("report.json"));
+    assert_eq!(replaced["field"]["iterations"].as_u64(), Some(3));
+    assert_eq!(replaced["strips"]["width_m"].as_f64(), Some(0.3));
+    // No staging directories are left beside the output.
+    let leftovers: Vec<_> = std::fs::read_dir(&dir.0).expect("dir").filter_map(Result::ok).filter(|e| e.file_name() != "lamella-out").collect();
+    assert!(leftovers.is_empty(), "left behind: {leftovers:?}");
+}
