@@ -50,16 +50,13 @@ pub(crate) fn assemble_reduced(
         *r = -g;
     }
     for (l, system) in systems.iter().enumerate() {
-        let globals = groups.globals(l);
-        let mut targets = pattern.schur_targets[pattern.schur_ptr[l]..pattern.schur_ptr[l + 1]].iter();
-        for i in 0..globals.len() {
-            for j in i..globals.len() {
-                // The group's target list holds exactly q(q+1)/2 upper pairs in this order.
-                if let Some(&t) = targets.next() {
-                    values[t] -= system.schur[(i, j)];
-                }
-            }
-            rhs[globals[i] as usize] += system.schur_rhs[i];
+        // The group's target list holds exactly q(q+1)/2 upper pairs, in the packed order of W.
+        let targets = &pattern.schur_targets[pattern.schur_ptr[l]..pattern.schur_ptr[l + 1]];
+        for (&t, &w) in targets.iter().zip(system.schur()) {
+            values[t] -= w;
+        }
+        for (&v, &r) in groups.globals(l).iter().zip(system.schur_rhs()) {
+            rhs[v as usize] += r;
         }
     }
 }

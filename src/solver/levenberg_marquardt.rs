@@ -246,7 +246,7 @@ impl LevenbergMarquardt {
                 .for_each(|(l, system)| system.back_substitute(groups.globals(l), global_step));
         }
         for (l, system) in self.systems.iter().enumerate() {
-            self.step[self.groups.starts[l]..self.groups.starts[l + 1]].copy_from_slice(system.step.as_slice());
+            self.step[self.groups.starts[l]..self.groups.starts[l + 1]].copy_from_slice(system.step());
         }
         self.step.iter().all(|h| h.is_finite())
     }
