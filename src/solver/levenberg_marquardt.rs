@@ -118,13 +118,21 @@ impl LevenbergMarquardt {
         self.check_unchanged(problem, x)?;
         evaluate_slots(problem, &self.blocks, x, &mut self.slots)?;
         let energy = reduce_blocks(&self.blocks, &self.pattern, &mut self.slots, &mut self.gradient, &mut self.hessian);
-        {
+        // With μ already known, each group is eliminated for the first trial right after its
+        // accumulation, while its workspace is still in cache.
+        let known_mu = self.mu;
+        let eliminated = {
             let (blocks, groups, slots, gradient) = (&self.blocks, &self.groups, &self.slots, &self.gradient);
             self.systems
                 .par_iter_mut()
                 .enumerate()
-                .for_each(|(l, system)| system.accumulate(l, blocks, groups, slots, gradient));
-        }
+                .map(|(l, system)| {
+                    system.accumulate(l, blocks, groups, slots, gradient);
+                    known_mu.is_none_or(|mu| system.eliminate(mu))
+                })
+                .reduce(|| true, |a, b| a && b)
+        };
+        let mut first_elimination = known_mu.map(|mu| (mu, eliminated));
         let gradient_norm_inf = self.gradient.iter().fold(0.0, |m: f64, g| m.max(g.abs()));
         let mu = match self.mu {
             Some(mu) => mu,
@@ -154,7 +162,8 @@ impl LevenbergMarquardt {
         while outcome.trials < self.options.max_trials {
             outcome.trials += 1;
             let mu = self.damping();
-            if self.solve_damped(mu) {
+            let eliminated = first_elimination.take().filter(|&(known, _)| known == mu).map(|(_, ok)| ok);
+            if self.solve_damped(mu, eliminated) {
                 factorised_once = true;
                 outcome.step_norm = self.step.iter().map(|h| h * h).sum::<f64>().sqrt();
                 let eps2 = self.options.step_tolerance;
@@ -213,10 +222,14 @@ impl LevenbergMarquardt {
         self.mu = Some(self.clamp_damping(mu));
     }
 
-    /// Solves the damped normal equations for the step h (into `self.step`). Returns `false` if a
-    /// factorisation fails or the step is not finite.
-    fn solve_damped(&mut self, mu: f64) -> bool {
-        let eliminated = self.systems.par_iter_mut().map(|system| system.eliminate(mu)).all(|ok| ok);
+    /// Solves the damped normal equations for the step h (into `self.step`). `eliminated` is the
+    /// outcome of the group eliminations if they were already done for this μ. Returns `false` if
+    /// a factorisation fails or the step is not finite.
+    fn solve_damped(&mut self, mu: f64, eliminated: Option<bool>) -> bool {
+        let eliminated = match eliminated {
+            Some(ok) => ok,
+            None => self.systems.par_iter_mut().map(|system| system.eliminate(mu)).reduce(|| true, |a, b| a && b),
+        };
         if !eliminated {
             return false;
         }

@@ -22,6 +22,10 @@ pub(crate) struct GroupSystem {
     k: usize,
     q: usize,
     buffer: Vec<f64>,
+    /// Nonzero local (offset, value) and global (coupling index, value) entries of one
+    /// Jacobian row (capacities k and q, never exceeded).
+    row_locals: Vec<(u32, f64)>,
+    row_globals: Vec<(u32, f64)>,
 }
 
 /// Mutable views of a group's workspace sections.
@@ -39,7 +43,7 @@ impl GroupSystem {
     pub fn new(k: usize, q: usize) -> Self {
         let w = q + 1;
         let len = 2 * k * k + 2 * k * w + triangle_len(q) + q + k;
-        Self { k, q, buffer: vec![0.0; len] }
+        Self { k, q, buffer: vec![0.0; len], row_locals: Vec::with_capacity(k), row_globals: Vec::with_capacity(q) }
     }
 
     fn sections(&mut self) -> Sections<'_> {
@@ -85,6 +89,7 @@ impl GroupSystem {
         gradient: &[f64],
     ) {
         let (k, w) = (self.k, self.q + 1);
+        let (mut row_locals, mut row_globals) = (std::mem::take(&mut self.row_locals), std::mem::take(&mut self.row_globals));
         let s = self.sections();
         s.normal.fill(0.0);
         s.coupling.fill(0.0);
@@ -95,23 +100,25 @@ impl GroupSystem {
             let (local_positions, local_offsets) = blocks.local_positions(b);
             let global_positions = blocks.global_positions(b);
             let coupling_index = blocks.coupling_index(b);
+            // A block of a group has at least one (local) variable, so n > 0.
             for row in jacobian.chunks_exact(n) {
-                for (&pa, &oa) in local_positions.iter().zip(local_offsets) {
-                    let va = row[pa as usize];
-                    // Structural zeros (e.g. auxiliaries absent from a residual row) add nothing.
-                    if va == 0.0 {
-                        continue;
-                    }
+                // Structural zeros (e.g. auxiliaries absent from a residual row, field values of
+                // uncrossed edges) add nothing: gather the row's nonzero entries first.
+                row_locals.clear();
+                row_locals.extend(local_positions.iter().zip(local_offsets).map(|(&p, &o)| (o, row[p as usize])).filter(|e| e.1 != 0.0));
+                row_globals.clear();
+                row_globals.extend(global_positions.iter().zip(coupling_index).map(|(&p, &i)| (i, row[p as usize])).filter(|e| e.1 != 0.0));
+                for &(oa, va) in &row_locals {
                     let oa = oa as usize;
                     let normal_row = &mut s.normal[oa * k..(oa + 1) * k];
-                    for (&pc, &oc) in local_positions.iter().zip(local_offsets) {
+                    for &(oc, vc) in &row_locals {
                         if oc as usize <= oa {
-                            normal_row[oc as usize] += va * row[pc as usize];
+                            normal_row[oc as usize] += va * vc;
                         }
                     }
                     let coupling_row = &mut s.coupling[oa * w..(oa + 1) * w];
-                    for (&pg, &ig) in global_positions.iter().zip(coupling_index) {
-                        coupling_row[ig as usize] += va * row[pg as usize];
+                    for &(ig, vg) in &row_globals {
+                        coupling_row[ig as usize] += va * vg;
                     }
                 }
             }
@@ -120,6 +127,8 @@ impl GroupSystem {
         for (row, &g) in s.coupling.chunks_exact_mut(w).zip(local_gradient) {
             row[w - 1] = g;
         }
+        self.row_locals = row_locals;
+        self.row_globals = row_globals;
     }
 
     /// Largest diagonal entry of D_L.
@@ -131,41 +140,7 @@ impl GroupSystem {
     /// Returns `false` if the dense factorisation fails (not numerically positive definite).
     pub fn eliminate(&mut self, mu: f64) -> bool {
         let (k, q) = (self.k, self.q);
-        let w = q + 1;
-        let s = self.sections();
-        if !cholesky_lower(s.normal, mu, s.factor, k) {
-            return false;
-        }
-        // Forward substitution, row by row: Z_i = (B_i − Σ_{p<i} L_ip Z_p) / L_ii.
-        s.solved.copy_from_slice(s.coupling);
-        for i in 0..k {
-            let (done, rest) = s.solved.split_at_mut(i * w);
-            let current = &mut rest[..w];
-            for (p, &lip) in s.factor[i * k..i * k + i].iter().enumerate() {
-                for (c, &z) in current.iter_mut().zip(&done[p * w..(p + 1) * w]) {
-                    *c -= lip * z;
-                }
-            }
-            let diagonal = s.factor[i * k + i];
-            for c in current.iter_mut() {
-                *c /= diagonal;
-            }
-        }
-        // W = ZᵀZ (upper, packed) and v = Zᵀz, summed over the rows of Z in order.
-        s.schur.fill(0.0);
-        s.schur_rhs.fill(0.0);
-        for z_row in s.solved.chunks_exact(w) {
-            let mut t = 0;
-            for i in 0..q {
-                let zi = z_row[i];
-                for &zj in &z_row[i..q] {
-                    s.schur[t] += zi * zj;
-                    t += 1;
-                }
-                s.schur_rhs[i] += zi * z_row[q];
-            }
-        }
-        true
+        eliminate_kernel(k, q, &mut self.sections(), mu)
     }
 
     /// h_L = −L⁻ᵀ(z + Z h_G) from the reduced solution `global_step`.
@@ -187,6 +162,44 @@ impl GroupSystem {
             *h = -*h;
         }
     }
+}
+
+/// [`GroupSystem::eliminate`] for k local and q global variables.
+fn eliminate_kernel(k: usize, q: usize, s: &mut Sections<'_>, mu: f64) -> bool {
+    let w = q + 1;
+    if !cholesky_lower(s.normal, mu, s.factor, k) {
+        return false;
+    }
+    // Forward substitution, row by row: Z_i = (B_i − Σ_{p<i} L_ip Z_p) / L_ii.
+    s.solved.copy_from_slice(s.coupling);
+    for i in 0..k {
+        let (done, rest) = s.solved.split_at_mut(i * w);
+        let current = &mut rest[..w];
+        for (p, &lip) in s.factor[i * k..i * k + i].iter().enumerate() {
+            for (c, &z) in current.iter_mut().zip(&done[p * w..(p + 1) * w]) {
+                *c -= lip * z;
+            }
+        }
+        let diagonal = s.factor[i * k + i];
+        for c in current.iter_mut() {
+            *c /= diagonal;
+        }
+    }
+    // W = ZᵀZ (upper, packed) and v = Zᵀz, summed over the rows of Z in order.
+    s.schur.fill(0.0);
+    s.schur_rhs.fill(0.0);
+    for z_row in s.solved.chunks_exact(w) {
+        let mut t = 0;
+        for i in 0..q {
+            let zi = z_row[i];
+            for (wij, &zj) in s.schur[t..t + q - i].iter_mut().zip(&z_row[i..q]) {
+                *wij += zi * zj;
+            }
+            t += q - i;
+            s.schur_rhs[i] += zi * z_row[q];
+        }
+    }
+    true
 }
 
 /// Cholesky factor (lower, row-major k×k, into `factor`) of `normal + μI`, reading only the lower
