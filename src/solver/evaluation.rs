@@ -39,7 +39,7 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
         // targets), accumulated row by row; structurally zero entries are skipped.
         s.gradient.fill(0.0);
         s.gram.fill(0.0);
-        let positions = structure.global_positions(b);
+        let positions = if s.gram.is_empty() { &[] } else { structure.global_positions(b) };
         for (row, &rv) in s.jacobian.chunks_exact(n).zip(s.residuals.iter()) {
             for (ga, &j) in s.gradient.iter_mut().zip(row) {
                 *ga += j * rv;

@@ -204,8 +204,16 @@ impl LevenbergMarquardt {
     }
 
     /// μ₀ = tau · max diag(JᵀJ) over global and local variables (tau itself for a zero Jacobian).
-    fn initial_damping(&self) -> f64 {
-        let global_max = self.pattern.diagonal.iter().fold(0.0, |m: f64, &d| m.max(self.hessian[d]));
+    /// The global diagonal adds the groups' G_L to H_GG (in `reduced`, used as scratch here).
+    fn initial_damping(&mut self) -> f64 {
+        self.reduced.copy_from_slice(&self.hessian);
+        for (l, system) in self.systems.iter().enumerate() {
+            let targets = &self.pattern.schur_targets[self.pattern.schur_ptr[l]..self.pattern.schur_ptr[l + 1]];
+            for (&t, &g) in targets.iter().zip(system.gram()) {
+                self.reduced[t] += g;
+            }
+        }
+        let global_max = self.pattern.diagonal.iter().fold(0.0, |m: f64, &d| m.max(self.reduced[d]));
         let max_diagonal = self.systems.iter().fold(global_max, |m, s| m.max(s.max_diagonal()));
         let scale = if max_diagonal > 0.0 { max_diagonal } else { 1.0 };
         self.clamp_damping(self.options.tau * scale)

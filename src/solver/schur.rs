@@ -11,13 +11,17 @@
 //! substitution), the Schur terms are W = ZᵀZ and v = Zᵀz, and h_L = −L⁻ᵀ(z + Z h_G).
 //! The groups are small (a handful of variables), so everything is hand-rolled on row-major
 //! slices of one buffer per group.
+//!
+//! The global Gram G_L = J_GᵀJ_G of the group's blocks is summed here too (from the same
+//! Jacobian rows) rather than scattered into H_GG block by block: the group hands S the single
+//! packed term W − G_L on its Schur targets, which cover every global pair of its blocks.
 use super::structure::{triangle_len, BlockStructure, GroupStructure};
 
 /// Dense per-group workspace (k local variables, q coupled global variables), sized once.
 ///
 /// `buffer` holds, in this order: D_L (k×k, lower triangle used), [C_L | g_L] (k×(q+1)), the
-/// Cholesky factor L (k×k, lower), [Z | z] (k×(q+1)), W (upper triangle of q×q packed row by
-/// row, the order of the pattern's Schur targets), v (q) and h_L (k). All row-major.
+/// Cholesky factor L (k×k, lower), [Z | z] (k×(q+1)), G_L and W − G_L (upper triangles of q×q
+/// packed row by row, the order of the pattern's Schur targets), v (q) and h_L (k). All row-major.
 pub(crate) struct GroupSystem {
     k: usize,
     q: usize,
@@ -34,6 +38,7 @@ struct Sections<'a> {
     coupling: &'a mut [f64],
     factor: &'a mut [f64],
     solved: &'a mut [f64],
+    gram: &'a mut [f64],
     schur: &'a mut [f64],
     schur_rhs: &'a mut [f64],
     step: &'a mut [f64],
@@ -42,7 +47,7 @@ struct Sections<'a> {
 impl GroupSystem {
     pub fn new(k: usize, q: usize) -> Self {
         let w = q + 1;
-        let len = 2 * k * k + 2 * k * w + triangle_len(q) + q + k;
+        let len = 2 * k * k + 2 * k * w + 2 * triangle_len(q) + q + k;
         Self { k, q, buffer: vec![0.0; len], row_locals: Vec::with_capacity(k), row_globals: Vec::with_capacity(q) }
     }
 
@@ -52,16 +57,29 @@ impl GroupSystem {
         let (coupling, rest) = rest.split_at_mut(k * w);
         let (factor, rest) = rest.split_at_mut(k * k);
         let (solved, rest) = rest.split_at_mut(k * w);
+        let (gram, rest) = rest.split_at_mut(triangle_len(self.q));
         let (schur, rest) = rest.split_at_mut(triangle_len(self.q));
         let (schur_rhs, step) = rest.split_at_mut(self.q);
-        Sections { normal, coupling, factor, solved, schur, schur_rhs, step }
+        Sections { normal, coupling, factor, solved, gram, schur, schur_rhs, step }
     }
 
-    fn schur_offset(&self) -> usize {
+    fn gram_offset(&self) -> usize {
         2 * self.k * self.k + 2 * self.k * (self.q + 1)
     }
 
-    /// W = C_Lᵀ(D_L+μI)⁻¹C_L, upper triangle packed row by row (valid after [`Self::eliminate`]).
+    fn schur_offset(&self) -> usize {
+        self.gram_offset() + triangle_len(self.q)
+    }
+
+    /// G_L = J_GᵀJ_G summed over the group's blocks, upper triangle packed row by row (valid
+    /// after [`Self::accumulate`]).
+    pub fn gram(&self) -> &[f64] {
+        let start = self.gram_offset();
+        &self.buffer[start..start + triangle_len(self.q)]
+    }
+
+    /// W − G_L with W = C_Lᵀ(D_L+μI)⁻¹C_L, upper triangle packed row by row (valid after
+    /// [`Self::eliminate`]).
     pub fn schur(&self) -> &[f64] {
         let start = self.schur_offset();
         &self.buffer[start..start + triangle_len(self.q)]
@@ -78,8 +96,8 @@ impl GroupSystem {
         &self.buffer[self.buffer.len() - self.k..]
     }
 
-    /// Accumulates D_L, C_L from the group's block Jacobians (in block order, rows in order) and
-    /// copies g_L from the full gradient.
+    /// Accumulates D_L, C_L and G_L from the group's block Jacobians (in block order, rows in
+    /// order) and copies g_L from the full gradient.
     pub fn accumulate(
         &mut self,
         l: usize,
@@ -88,11 +106,12 @@ impl GroupSystem {
         slots: &[f64],
         gradient: &[f64],
     ) {
-        let (k, w) = (self.k, self.q + 1);
+        let (k, q, w) = (self.k, self.q, self.q + 1);
         let (mut row_locals, mut row_globals) = (std::mem::take(&mut self.row_locals), std::mem::take(&mut self.row_globals));
         let s = self.sections();
         s.normal.fill(0.0);
         s.coupling.fill(0.0);
+        s.gram.fill(0.0);
         for &b in groups.blocks(l) {
             let b = b as usize;
             let n = blocks.var_ptr[b + 1] - blocks.var_ptr[b];
@@ -119,6 +138,12 @@ impl GroupSystem {
                     let coupling_row = &mut s.coupling[oa * w..(oa + 1) * w];
                     for &(ig, vg) in &row_globals {
                         coupling_row[ig as usize] += va * vg;
+                    }
+                }
+                for (a, &(ia, va)) in row_globals.iter().enumerate() {
+                    for &(ib, vb) in &row_globals[a..] {
+                        let (i, j) = if ia <= ib { (ia as usize, ib as usize) } else { (ib as usize, ia as usize) };
+                        s.gram[packed_upper_index(i, j, q)] += va * vb;
                     }
                 }
             }
@@ -185,8 +210,10 @@ fn eliminate_kernel(k: usize, q: usize, s: &mut Sections<'_>, mu: f64) -> bool {
             *c /= diagonal;
         }
     }
-    // W = ZᵀZ (upper, packed) and v = Zᵀz, summed over the rows of Z in order.
-    s.schur.fill(0.0);
+    // W − G_L = ZᵀZ − G_L (upper, packed) and v = Zᵀz, summed over the rows of Z in order.
+    for (wij, &g) in s.schur.iter_mut().zip(s.gram.iter()) {
+        *wij = -g;
+    }
     s.schur_rhs.fill(0.0);
     for z_row in s.solved.chunks_exact(w) {
         let mut t = 0;
@@ -221,4 +248,9 @@ fn cholesky_lower(normal: &[f64], mu: f64, factor: &mut [f64], k: usize) -> bool
         row_j[j] = pivot.sqrt();
     }
     true
+}
+
+/// Index of entry (i, j), i ≤ j, in the row-by-row packed upper triangle of a q×q matrix.
+fn packed_upper_index(i: usize, j: usize, q: usize) -> usize {
+    i * (2 * q - i + 1) / 2 + (j - i)
 }
