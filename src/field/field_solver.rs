@@ -9,6 +9,7 @@ use super::problem::FieldProblem;
 use super::report::StepReport;
 use crate::mesh::{TriMesh, Vec3};
 use crate::solver::{LeastSquaresProblem, LevenbergMarquardt};
+use rayon::prelude::*;
 
 /// The factors between the caller's units and the normalised problem.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -221,17 +222,24 @@ impl FieldSolver {
     }
 
     /// The orientation test of Sec. 3.2.2: where `det(q − p, u, n) ≤ 0`, re-initialise
-    /// `u = n × (q − p)` normalised. Returns how many side vectors were flipped.
+    /// `u = n × (q − p)` normalised. Returns how many side vectors were flipped. The level frames
+    /// are measured in parallel; each vertex's decision depends on its own data only.
     fn reorient_side_vectors(&mut self) -> usize {
         if !matches!(self.problem.family(), Family::PseudoGeodesic { .. }) {
             return 0;
         }
+        let flipped: Vec<Option<Vec3>> = (0..self.problem.interior().len())
+            .into_par_iter()
+            .map(|k| {
+                let v = self.problem.interior()[k] as usize;
+                let frame = level_frame(self.problem.mesh(), self.internal_field(), v)?;
+                (self.auxiliary(k, 3).dot(&frame.side) <= 0.0).then_some(frame.side)
+            })
+            .collect();
         let mut flips = 0;
-        for k in 0..self.problem.interior().len() {
-            let v = self.problem.interior()[k] as usize;
-            let Some(frame) = level_frame(self.problem.mesh(), self.internal_field(), v) else { continue };
-            if self.auxiliary(k, 3).dot(&frame.side) <= 0.0 {
-                self.set_auxiliary(k, 3, &frame.side);
+        for (k, side) in flipped.iter().enumerate() {
+            if let Some(side) = side {
+                self.set_auxiliary(k, 3, side);
                 flips += 1;
             }
         }

@@ -4,6 +4,7 @@ use super::darboux::level_frame;
 use super::params::{Family, Weights};
 use super::problem::{Block, FieldProblem};
 use crate::solver::LeastSquaresProblem;
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// The unweighted energy terms of Eq. 12 on the normalised problem (mean edge length 1,
@@ -55,12 +56,18 @@ impl StepReport {
         let mesh = problem.mesh();
         let field = &x[..mesh.vertex_count()];
         let theta = problem.family().theta_degrees();
+        // Frames in parallel, folded in vertex order (the result does not depend on the threads).
+        let frames: Vec<Option<Option<f64>>> = problem
+            .interior()
+            .par_iter()
+            .map(|&v| level_frame(mesh, field, v as usize).map(|frame| frame.signed_angle_degrees()))
+            .collect();
         let mut sum_squares = 0.0;
-        for &v in problem.interior() {
-            match level_frame(mesh, field, v as usize) {
+        for (&v, frame) in problem.interior().iter().zip(frames) {
+            match frame {
                 None => report.singular_vertices.push(v),
-                Some(frame) => {
-                    if let Some(measured) = frame.signed_angle_degrees() {
+                Some(measured) => {
+                    if let Some(measured) = measured {
                         let error = angle_error(problem.family(), measured, theta);
                         sum_squares += error * error;
                         report.angle_error_max_degrees = report.angle_error_max_degrees.max(error);
@@ -89,22 +96,29 @@ fn angle_error(family: Family, measured: f64, theta: f64) -> f64 {
 fn energies(problem: &FieldProblem, x: &[f64]) -> Energies {
     let unit = Weights { fair: 1.0, grad: 1.0, angle: 1.0 };
     let w = problem.weights();
+    // Per-block squared norms in parallel, summed in block order (as the serial loop would).
+    let squares: Vec<(f64, f64)> = (0..problem.block_count())
+        .into_par_iter()
+        .map_init(Vec::new, |residuals, b| {
+            residuals.clear();
+            residuals.resize(problem.block_residual_count(b), 0.0);
+            problem.evaluate_weighted(b, &unit, x, residuals, None);
+            let squares = |r: &[f64]| r.iter().map(|v| v * v).sum::<f64>();
+            match (problem.block(b), problem.family()) {
+                (Block::Curve(_), Family::PseudoGeodesic { .. }) => (squares(&residuals[..2]), squares(&residuals[2..])),
+                _ => (squares(residuals), 0.0),
+            }
+        })
+        .collect();
     let mut e = Energies::default();
-    let mut residuals = Vec::new();
-    for b in 0..problem.block_count() {
-        residuals.resize(problem.block_residual_count(b), 0.0);
-        problem.evaluate_weighted(b, &unit, x, &mut residuals, None);
-        let squares = |r: &[f64]| r.iter().map(|v| v * v).sum::<f64>();
+    for (b, &(first, rest)) in squares.iter().enumerate() {
         match problem.block(b) {
-            Block::Fair(_) => e.fair += squares(&residuals),
-            Block::Grad(_) => e.grad += squares(&residuals),
-            Block::Curve(_) => match problem.family() {
-                Family::PseudoGeodesic { .. } => {
-                    e.angle += squares(&residuals[..2]);
-                    e.frame += squares(&residuals[2..]);
-                }
-                Family::Geodesic | Family::Asymptotic => e.angle += squares(&residuals),
-            },
+            Block::Fair(_) => e.fair += first,
+            Block::Grad(_) => e.grad += first,
+            Block::Curve(_) => {
+                e.angle += first;
+                e.frame += rest;
+            }
         }
     }
     e.total = w.fair * e.fair + w.grad * e.grad + w.angle * (e.angle + e.frame);

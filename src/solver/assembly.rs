@@ -6,7 +6,8 @@ use super::schur::GroupSystem;
 use super::structure::{BlockStructure, GroupStructure};
 
 /// Sums the block slots in block order: returns E(x), and writes the full gradient g = Jᵀr and
-/// the values of H_GG = J_GᵀJ_G on the normal pattern.
+/// the values of H_GG = J_GᵀJ_G of the blocks without a local group on the normal pattern (the
+/// groups' blocks add theirs through [`GroupSystem::schur`]).
 pub(crate) fn reduce_blocks(
     structure: &BlockStructure,
     pattern: &NormalPattern,
@@ -30,7 +31,7 @@ pub(crate) fn reduce_blocks(
     sum_in_block_order(norms)
 }
 
-/// Reduced system for damping μ: `values` = H_GG + μI − Σ_L W_L, `rhs` = −g_G + Σ_L v_L
+/// Reduced system for damping μ: `values` = H_GG + μI − Σ_L (W_L − G_L), `rhs` = −g_G + Σ_L v_L
 /// (groups in order; `systems` must hold the eliminations for this μ).
 pub(crate) fn assemble_reduced(
     pattern: &NormalPattern,
@@ -50,16 +51,13 @@ pub(crate) fn assemble_reduced(
         *r = -g;
     }
     for (l, system) in systems.iter().enumerate() {
-        let globals = groups.globals(l);
-        let mut targets = pattern.schur_targets[pattern.schur_ptr[l]..pattern.schur_ptr[l + 1]].iter();
-        for i in 0..globals.len() {
-            for j in i..globals.len() {
-                // The group's target list holds exactly q(q+1)/2 upper pairs in this order.
-                if let Some(&t) = targets.next() {
-                    values[t] -= system.schur[(i, j)];
-                }
-            }
-            rhs[globals[i] as usize] += system.schur_rhs[i];
+        // The group's target list holds exactly q(q+1)/2 upper pairs, in the packed order of W.
+        let targets = &pattern.schur_targets[pattern.schur_ptr[l]..pattern.schur_ptr[l + 1]];
+        for (&t, &w) in targets.iter().zip(system.schur()) {
+            values[t] -= w;
+        }
+        for (&v, &r) in groups.globals(l).iter().zip(system.schur_rhs()) {
+            rhs[v as usize] += r;
         }
     }
 }

@@ -32,17 +32,28 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
             return false;
         }
         let n = s.gradient.len();
-        // Jᵀr.
-        for (a, ga) in s.gradient.iter_mut().enumerate() {
-            *ga = s.residuals.iter().enumerate().map(|(r, &rv)| s.jacobian[r * n + a] * rv).sum();
+        if n == 0 {
+            return true;
         }
-        // Upper Gram of the global columns, in the order of the pattern's gram targets.
-        let positions = structure.global_positions(b);
-        let mut t = 0;
-        for (i, &pi) in positions.iter().enumerate() {
-            for &pj in &positions[i..] {
-                s.gram[t] = column_dot(s.jacobian, n, pi as usize, pj as usize);
-                t += 1;
+        // Jᵀr and the upper Gram of the global columns (in the order of the pattern's gram
+        // targets), accumulated row by row; structurally zero entries are skipped.
+        s.gradient.fill(0.0);
+        s.gram.fill(0.0);
+        let positions = if s.gram.is_empty() { &[] } else { structure.global_positions(b) };
+        for (row, &rv) in s.jacobian.chunks_exact(n).zip(s.residuals.iter()) {
+            for (ga, &j) in s.gradient.iter_mut().zip(row) {
+                *ga += j * rv;
+            }
+            let mut t = 0;
+            for (i, &pi) in positions.iter().enumerate() {
+                let rest = &positions[i..];
+                let vi = row[pi as usize];
+                if vi != 0.0 {
+                    for (g, &pj) in s.gram[t..t + rest.len()].iter_mut().zip(rest) {
+                        *g += vi * row[pj as usize];
+                    }
+                }
+                t += rest.len();
             }
         }
         true
@@ -59,11 +70,6 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
             }
         }
     }
-}
-
-/// Dot product of columns `a` and `c` of a row-major matrix with `n` columns.
-pub(crate) fn column_dot(matrix: &[f64], n: usize, a: usize, c: usize) -> f64 {
-    matrix.chunks_exact(n).map(|row| row[a] * row[c]).sum()
 }
 
 /// E(x) from residuals evaluated into `residuals` (segmented by `residual_ptr`), or `None` if any

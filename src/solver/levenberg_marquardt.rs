@@ -118,13 +118,21 @@ impl LevenbergMarquardt {
         self.check_unchanged(problem, x)?;
         evaluate_slots(problem, &self.blocks, x, &mut self.slots)?;
         let energy = reduce_blocks(&self.blocks, &self.pattern, &mut self.slots, &mut self.gradient, &mut self.hessian);
-        {
+        // With μ already known, each group is eliminated for the first trial right after its
+        // accumulation, while its workspace is still in cache.
+        let known_mu = self.mu;
+        let eliminated = {
             let (blocks, groups, slots, gradient) = (&self.blocks, &self.groups, &self.slots, &self.gradient);
             self.systems
                 .par_iter_mut()
                 .enumerate()
-                .for_each(|(l, system)| system.accumulate(l, blocks, groups, slots, gradient));
-        }
+                .map(|(l, system)| {
+                    system.accumulate(l, blocks, groups, slots, gradient);
+                    known_mu.is_none_or(|mu| system.eliminate(mu))
+                })
+                .reduce(|| true, |a, b| a && b)
+        };
+        let mut first_elimination = known_mu.map(|mu| (mu, eliminated));
         let gradient_norm_inf = self.gradient.iter().fold(0.0, |m: f64, g| m.max(g.abs()));
         let mu = match self.mu {
             Some(mu) => mu,
@@ -154,7 +162,8 @@ impl LevenbergMarquardt {
         while outcome.trials < self.options.max_trials {
             outcome.trials += 1;
             let mu = self.damping();
-            if self.solve_damped(mu) {
+            let eliminated = first_elimination.take().filter(|&(known, _)| known == mu).map(|(_, ok)| ok);
+            if self.solve_damped(mu, eliminated) {
                 factorised_once = true;
                 outcome.step_norm = self.step.iter().map(|h| h * h).sum::<f64>().sqrt();
                 let eps2 = self.options.step_tolerance;
@@ -195,8 +204,16 @@ impl LevenbergMarquardt {
     }
 
     /// μ₀ = tau · max diag(JᵀJ) over global and local variables (tau itself for a zero Jacobian).
-    fn initial_damping(&self) -> f64 {
-        let global_max = self.pattern.diagonal.iter().fold(0.0, |m: f64, &d| m.max(self.hessian[d]));
+    /// The global diagonal adds the groups' G_L to H_GG (in `reduced`, used as scratch here).
+    fn initial_damping(&mut self) -> f64 {
+        self.reduced.copy_from_slice(&self.hessian);
+        for (l, system) in self.systems.iter().enumerate() {
+            let targets = &self.pattern.schur_targets[self.pattern.schur_ptr[l]..self.pattern.schur_ptr[l + 1]];
+            for (&t, &g) in targets.iter().zip(system.gram()) {
+                self.reduced[t] += g;
+            }
+        }
+        let global_max = self.pattern.diagonal.iter().fold(0.0, |m: f64, &d| m.max(self.reduced[d]));
         let max_diagonal = self.systems.iter().fold(global_max, |m, s| m.max(s.max_diagonal()));
         let scale = if max_diagonal > 0.0 { max_diagonal } else { 1.0 };
         self.clamp_damping(self.options.tau * scale)
@@ -213,10 +230,14 @@ impl LevenbergMarquardt {
         self.mu = Some(self.clamp_damping(mu));
     }
 
-    /// Solves the damped normal equations for the step h (into `self.step`). Returns `false` if a
-    /// factorisation fails or the step is not finite.
-    fn solve_damped(&mut self, mu: f64) -> bool {
-        let eliminated = self.systems.par_iter_mut().map(|system| system.eliminate(mu)).all(|ok| ok);
+    /// Solves the damped normal equations for the step h (into `self.step`). `eliminated` is the
+    /// outcome of the group eliminations if they were already done for this μ. Returns `false` if
+    /// a factorisation fails or the step is not finite.
+    fn solve_damped(&mut self, mu: f64, eliminated: Option<bool>) -> bool {
+        let eliminated = match eliminated {
+            Some(ok) => ok,
+            None => self.systems.par_iter_mut().map(|system| system.eliminate(mu)).reduce(|| true, |a, b| a && b),
+        };
         if !eliminated {
             return false;
         }
@@ -246,7 +267,7 @@ impl LevenbergMarquardt {
                 .for_each(|(l, system)| system.back_substitute(groups.globals(l), global_step));
         }
         for (l, system) in self.systems.iter().enumerate() {
-            self.step[self.groups.starts[l]..self.groups.starts[l + 1]].copy_from_slice(system.step.as_slice());
+            self.step[self.groups.starts[l]..self.groups.starts[l + 1]].copy_from_slice(system.step());
         }
         self.step.iter().all(|h| h.is_finite())
     }

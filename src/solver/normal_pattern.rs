@@ -10,7 +10,8 @@ pub(crate) struct NormalPattern {
     pub row_idx: Vec<usize>,
     /// Position of the diagonal entry of each column.
     pub diagonal: Vec<usize>,
-    /// `gram_targets[gram_ptr[b]..]`: for each upper pair (i ≤ j) of block b's global positions,
+    /// `gram_targets[gram_ptr[b]..]`: for each upper pair (i ≤ j) of the global positions of a block b
+    /// without a local group (none for the others),
     /// in the order of its Gram slot, the value position in S.
     pub gram_ptr: Vec<usize>,
     pub gram_targets: Vec<usize>,
@@ -57,7 +58,7 @@ impl NormalPattern {
         }
         for b in 0..blocks.block_count() {
             let vars = blocks.variables(b);
-            let positions = blocks.global_positions(b);
+            let positions = if blocks.group[b].is_none() { blocks.global_positions(b) } else { &[] };
             pattern.gram_targets.reserve(triangle_len(positions.len()));
             for (i, &pi) in positions.iter().enumerate() {
                 for &pj in &positions[i..] {

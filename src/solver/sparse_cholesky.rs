@@ -1,8 +1,14 @@
 //! Sparse Cholesky of the reduced normal matrix (faer): AMD ordering and symbolic analysis once,
 //! numeric factorisation per damped trial, all workspaces preallocated; sequential (`Par::Seq`)
 //! so results are bit-identical for any thread count.
+//!
+//! The fill-reducing permutation is applied to the sparsity pattern once: the matrix is handed to
+//! faer already permuted (lower triangle, the side its supernodal factorisation works on), so a
+//! numeric factorisation only scatters the values through a precomputed map instead of
+//! re-permuting the whole matrix on every trial.
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
 use faer::linalg::cholesky::llt::factor::LltRegularization;
+use faer::sparse::linalg::amd;
 use faer::sparse::linalg::cholesky::{
     factorize_symbolic_cholesky, CholeskySymbolicParams, LltRef, SymbolicCholesky, SymmetricOrdering,
 };
@@ -12,43 +18,95 @@ use faer::{Conj, MatMut, Par, Side};
 use super::SolverError;
 
 pub(crate) struct SparseCholesky {
-    pattern: SymbolicSparseColMat<usize>,
+    /// Lower triangle of P S Pᵀ (CSC, sorted rows).
+    permuted_pattern: SymbolicSparseColMat<usize>,
+    /// `permuted_values[value_map[i]]` = value `i` of the caller's upper pattern.
+    value_map: Vec<usize>,
+    permuted_values: Vec<f64>,
+    /// `new_index[i]`: position of variable `i` in the permuted order.
+    new_index: Vec<usize>,
+    permuted_rhs: Vec<f64>,
     symbolic: SymbolicCholesky<usize>,
     factor: Vec<f64>,
     scratch: MemBuffer,
 }
 
 impl SparseCholesky {
-    /// Symbolic analysis of the upper-triangular CSC pattern (sorted rows, diagonal present).
+    /// AMD ordering and symbolic analysis of the upper-triangular CSC pattern (sorted rows,
+    /// diagonal present).
     pub fn analyse(col_ptr: Vec<usize>, row_idx: Vec<usize>) -> Result<Self, SolverError> {
         let n = col_ptr.len() - 1;
         let failed = |e: &dyn std::fmt::Debug| SolverError::SymbolicAnalysisFailed { message: format!("{e:?}") };
         let pattern = SymbolicSparseColMat::new_checked(n, n, col_ptr, None, row_idx);
+        let nnz = pattern.compute_nnz();
+
+        // Fill-reducing ordering (the one faer's `SymmetricOrdering::Amd` computes).
+        let mut perm = vec![0usize; n];
+        let mut new_index = vec![0usize; n];
+        {
+            let mut amd_scratch = MemBuffer::try_new(amd::order_maybe_unsorted_scratch::<usize>(n, nnz)).map_err(|e| failed(&e))?;
+            amd::order_maybe_unsorted(&mut perm, &mut new_index, pattern.as_ref(), amd::Control::default(), MemStack::new(&mut amd_scratch))
+                .map_err(|e| failed(&e))?;
+        }
+
+        // The permuted matrix P S Pᵀ: entry (r, c) moves to (new_index[r], new_index[c]). Its upper
+        // triangle feeds the symbolic analysis (which expects the upper side without an ordering),
+        // its lower triangle the supernodal numeric factorisation.
+        let mut low = Vec::with_capacity(nnz);
+        let mut high = Vec::with_capacity(nnz);
+        for c in 0..n {
+            for &r in &pattern.row_idx()[pattern.col_ptr()[c]..pattern.col_ptr()[c + 1]] {
+                let (a, b) = (new_index[r], new_index[c]);
+                low.push(a.min(b));
+                high.push(a.max(b));
+            }
+        }
+        let by_low = counting_sort(n, &low, (0..nnz).collect());
+        let upper_order = counting_sort(n, &high, by_low.clone());
+        let upper = triangle_pattern(n, upper_order.iter().map(|&e| (high[e], low[e])));
         let symbolic = factorize_symbolic_cholesky(
-            pattern.as_ref(),
+            upper.as_ref(),
             Side::Upper,
-            SymmetricOrdering::Amd,
+            SymmetricOrdering::Identity,
             CholeskySymbolicParams::default(),
         )
         .map_err(|e| failed(&e))?;
+        let lower_order = counting_sort(n, &low, counting_sort(n, &high, by_low));
+        let permuted_pattern = triangle_pattern(n, lower_order.iter().map(|&e| (low[e], high[e])));
+        let mut value_map = vec![0usize; nnz];
+        for (position, &original) in lower_order.iter().enumerate() {
+            value_map[original] = position;
+        }
         let req = StackReq::or(
             symbolic.factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default()),
             symbolic.solve_in_place_scratch::<f64>(1, Par::Seq),
         );
         let scratch = MemBuffer::try_new(req).map_err(|e| failed(&e))?;
         let factor = vec![0.0; symbolic.len_val()];
-        Ok(Self { pattern, symbolic, factor, scratch })
+        Ok(Self {
+            permuted_pattern,
+            value_map,
+            permuted_values: vec![0.0; nnz],
+            new_index,
+            permuted_rhs: vec![0.0; n],
+            symbolic,
+            factor,
+            scratch,
+        })
     }
 
     /// Numeric factorisation of the matrix with the analysed pattern and upper values `values`.
     /// Returns `false` if it is not numerically positive definite.
     pub fn factorize(&mut self, values: &[f64]) -> bool {
-        let matrix = SparseColMatRef::new(self.pattern.as_ref(), values);
+        for (&target, &value) in self.value_map.iter().zip(values) {
+            self.permuted_values[target] = value;
+        }
+        let matrix = SparseColMatRef::new(self.permuted_pattern.as_ref(), &self.permuted_values);
         self.symbolic
             .factorize_numeric_llt(
                 &mut self.factor,
                 matrix,
-                Side::Upper,
+                Side::Lower,
                 LltRegularization::default(),
                 Par::Seq,
                 MemStack::new(&mut self.scratch),
@@ -60,11 +118,48 @@ impl SparseCholesky {
     /// Solves S h = rhs in place with the last successful factorisation.
     pub fn solve_in_place(&mut self, rhs: &mut [f64]) {
         let n = rhs.len();
+        for (&i, &r) in self.new_index.iter().zip(rhs.iter()) {
+            self.permuted_rhs[i] = r;
+        }
         LltRef::new(&self.symbolic, &self.factor).solve_in_place_with_conj(
             Conj::No,
-            MatMut::from_column_major_slice_mut(rhs, n, 1),
+            MatMut::from_column_major_slice_mut(&mut self.permuted_rhs, n, 1),
             Par::Seq,
             MemStack::new(&mut self.scratch),
         );
+        for (&i, r) in self.new_index.iter().zip(rhs.iter_mut()) {
+            *r = self.permuted_rhs[i];
+        }
     }
+}
+
+/// Stable counting sort of the entries `order` by `key[entry]` (keys below `n`).
+fn counting_sort(n: usize, key: &[usize], order: Vec<usize>) -> Vec<usize> {
+    let mut start = vec![0usize; n + 1];
+    for &e in &order {
+        start[key[e] + 1] += 1;
+    }
+    for i in 0..n {
+        start[i + 1] += start[i];
+    }
+    let mut sorted = vec![0usize; order.len()];
+    for e in order {
+        sorted[start[key[e]]] = e;
+        start[key[e]] += 1;
+    }
+    sorted
+}
+
+/// CSC pattern from (column, row) pairs sorted by column, then row.
+fn triangle_pattern(n: usize, entries: impl Iterator<Item = (usize, usize)>) -> SymbolicSparseColMat<usize> {
+    let mut col_ptr = vec![0usize; n + 1];
+    let mut row_idx = Vec::new();
+    for (col, row) in entries {
+        col_ptr[col + 1] += 1;
+        row_idx.push(row);
+    }
+    for c in 0..n {
+        col_ptr[c + 1] += col_ptr[c];
+    }
+    SymbolicSparseColMat::new_checked(n, n, col_ptr, None, row_idx)
 }

@@ -13,6 +13,8 @@ pub(crate) struct BlockStructure {
     pub residual_ptr: Vec<usize>,
     /// `slot_ptr[b]..slot_ptr[b+1]`: block `b`'s evaluation slot, laid out as
     /// [residuals m | Jacobian m×n row-major | Jᵀr n | upper-triangular Gram of global columns].
+    /// Blocks of a local group have no Gram part: their J_GᵀJ_G is summed per group (see
+    /// [`super::schur::GroupSystem`]).
     pub slot_ptr: Vec<usize>,
     /// Positions (within the block's variable list) of its global variables.
     pub global_ptr: Vec<usize>,
@@ -183,7 +185,7 @@ pub(crate) fn analyse<P: LeastSquaresProblem>(problem: &P) -> Result<(BlockStruc
         let too_large = || invalid(b, "block too large".to_string());
         let slot_len = m
             .checked_mul(vars.len())
-            .and_then(|mn| mn.checked_add(m + vars.len() + triangle_len(global_count)))
+            .and_then(|mn| mn.checked_add(m + vars.len() + if group.is_none() { triangle_len(global_count) } else { 0 }))
             .ok_or_else(too_large)?;
         let last_slot = s.slot_ptr[b];
         s.slot_ptr.push(last_slot.checked_add(slot_len).ok_or_else(too_large)?);
