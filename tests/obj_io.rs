@@ -132,3 +132,20 @@ fn garbage_text_never_panics() {
         let _ = TriMesh::parse_obj(&text);
     }
 }
+
+#[test]
+fn diagnose_obj_lists_every_problem_with_its_line() {
+    // Line 5 repeats an index, line 6 refers to a vertex that does not exist; both are reported.
+    let text = format!("{SQUARE}f 1 1 2\nf 1 2 9\n");
+    let problems = TriMesh::diagnose_obj(&text).expect("well-formed lines");
+    let lines: Vec<usize> = problems
+        .iter()
+        .filter_map(|p| match p {
+            MeshError::ObjLine { line, .. } => Some(*line),
+            _ => None,
+        })
+        .collect();
+    assert!(lines.contains(&5) && lines.contains(&6), "{problems:?}");
+    assert!(TriMesh::diagnose_obj(&format!("{SQUARE}f 1 2 3\nf 1 3 4\n")).expect("valid").is_empty());
+    assert!(matches!(TriMesh::diagnose_obj("v 1 2\n"), Err(MeshError::ObjParse { line: 1, .. })));
+}
