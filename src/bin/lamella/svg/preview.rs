@@ -65,6 +65,10 @@ struct Facet {
     fill: String,
     stroke: String,
     depth: f64,
+    /// Added to the depth: strips straddle the surface (half of each quad lies under it), so
+    /// without a nudge towards the viewer the painter's order lets the nearby surface triangles
+    /// cut every strip into a saw-tooth.
+    lift: f64,
 }
 
 /// The preview image of `mesh` with `pattern`.
@@ -74,19 +78,20 @@ pub fn preview_svg(mesh: &TriMesh, pattern: &StripPattern) -> String {
     for (f, face) in mesh.faces().iter().enumerate() {
         let corners: Vec<Vec3> = face.iter().map(|&v| mesh.positions()[v as usize]).collect();
         let fill = camera.shade(SURFACE_RGB, &mesh.face_normals()[f]);
-        facets.push(Facet { depth: 0.0, stroke: fill.clone(), fill, corners });
+        facets.push(Facet { depth: 0.0, lift: 0.0, stroke: fill.clone(), fill, corners });
     }
     for (id, strip) in pattern.strips.iter().enumerate() {
         for j in 0..strip.left.len().min(strip.right.len()).saturating_sub(1) {
             let corners = vec![strip.left[j], strip.left[j + 1], strip.right[j + 1], strip.right[j]];
             let normal = (corners[1] - corners[3]).cross(&(corners[2] - corners[0]));
             let fill = camera.shade(strip_rgb(id), &normal);
-            facets.push(Facet { depth: 0.0, stroke: "#333".into(), fill, corners });
+            let lift = (strip.left[j] - strip.right[j]).norm();
+            facets.push(Facet { depth: 0.0, lift, stroke: "#333".into(), fill, corners });
         }
     }
     for facet in &mut facets {
         let n = facet.corners.len().max(1) as f64;
-        facet.depth = facet.corners.iter().map(|c| c.dot(&camera.view)).sum::<f64>() / n;
+        facet.depth = facet.corners.iter().map(|c| c.dot(&camera.view)).sum::<f64>() / n + facet.lift;
     }
     // Far to near; ties keep the input order (stable sort), so the image is deterministic.
     facets.sort_by(|a, b| a.depth.total_cmp(&b.depth));
