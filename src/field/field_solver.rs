@@ -1,7 +1,7 @@
 //! The stepwise field optimiser (Sec. 3.2.2): create it, `step` it a few iterations at a
 //! time, read the field and the binormals in between, change the weights, continue.
 
-use super::darboux::level_frame;
+use super::darboux::{level_frame, LevelFrame};
 use super::error::FieldError;
 use super::gradient_norm::mean_gradient_norm;
 use super::params::{Family, FieldParams, Weights, SETTLING_ITERATIONS};
@@ -125,17 +125,17 @@ impl FieldSolver {
     /// binormal of the level polyline otherwise; zero at boundary and singular vertices
     /// and where the level polyline is straight.
     pub fn binormals(&self) -> Vec<Vec3> {
-        self.per_interior_vertex(|solver, k, v| match solver.problem.family() {
+        self.per_interior_vertex(|solver, k, frame| match solver.problem.family() {
             Family::PseudoGeodesic { .. } => solver.auxiliary(k, 0).try_normalize(0.0),
-            Family::Geodesic | Family::Asymptotic => level_frame(solver.problem.mesh(), solver.internal_field(), v)?.binormal,
+            Family::Geodesic | Family::Asymptotic => frame.binormal,
         })
     }
 
     /// Unit side vector `u` of the Darboux frame per vertex (Eq. 10); zero at boundary and singular vertices.
     pub fn side_vectors(&self) -> Vec<Vec3> {
-        self.per_interior_vertex(|solver, k, v| match solver.problem.family() {
+        self.per_interior_vertex(|solver, k, frame| match solver.problem.family() {
             Family::PseudoGeodesic { .. } => solver.auxiliary(k, 3).try_normalize(0.0),
-            Family::Geodesic | Family::Asymptotic => Some(level_frame(solver.problem.mesh(), solver.internal_field(), v)?.side),
+            Family::Geodesic | Family::Asymptotic => Some(frame.side),
         })
     }
 
@@ -184,11 +184,13 @@ impl FieldSolver {
         self.x[start..start + 3].copy_from_slice(value.as_slice());
     }
 
-    fn per_interior_vertex(&self, value: impl Fn(&Self, usize, usize) -> Option<Vec3>) -> Vec<Vec3> {
+    /// `value(self, k, frame)` at each regular interior vertex (the `k`-th, with its level frame);
+    /// zero elsewhere.
+    fn per_interior_vertex(&self, value: impl Fn(&Self, usize, &LevelFrame) -> Option<Vec3>) -> Vec<Vec3> {
         let mut out = vec![Vec3::zeros(); self.vertex_count()];
         for (k, &v) in self.problem.interior().iter().enumerate() {
-            if level_frame(self.problem.mesh(), self.internal_field(), v as usize).is_some() {
-                out[v as usize] = value(self, k, v as usize).unwrap_or_else(Vec3::zeros);
+            if let Some(frame) = level_frame(self.problem.mesh(), self.internal_field(), v as usize) {
+                out[v as usize] = value(self, k, &frame).unwrap_or_else(Vec3::zeros);
             }
         }
         out

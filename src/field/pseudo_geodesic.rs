@@ -15,8 +15,7 @@
 //! Rows 2, 3 and 5 use normalised chords with their exact derivatives (no frozen norms).
 //! Singular vertices (see [`super::crossing`]) get zero rows.
 
-use super::crossing::find_level_crossing;
-use super::star_chords::StarChords;
+use super::star_chords::clear_rows_at_vertex;
 use crate::mesh::{TriMesh, Vec3};
 
 /// Residual rows per interior vertex.
@@ -49,16 +48,11 @@ pub(crate) fn evaluate(
     target: TargetAngle,
     scale: f64,
     residuals: &mut [f64],
-    jacobian: Option<&mut [f64]>,
+    mut jacobian: Option<&mut [f64]>,
     aux_column: usize,
 ) {
-    residuals.fill(0.0);
     let columns = aux_column + AUXILIARIES;
-    let jacobian = jacobian.map(|j| {
-        j.fill(0.0);
-        j
-    });
-    let Some(chords) = find_level_crossing(mesh, field, v).and_then(|c| StarChords::new(mesh, field, v, &c)) else {
+    let Some(chords) = clear_rows_at_vertex(mesh, field, v, residuals, &mut jacobian) else {
         return;
     };
     let n = mesh.vertex_normals()[v];

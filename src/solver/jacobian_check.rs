@@ -6,7 +6,7 @@ use super::LeastSquaresProblem;
 /// Returns +∞ for an out-of-range block, a wrong length of `x`, a non-positive `h` or
 /// non-finite values.
 pub fn check_block_jacobian<P: LeastSquaresProblem>(problem: &P, x: &[f64], block: usize, h: f64) -> f64 {
-    if block >= problem.block_count() || x.len() != problem.variable_count() || !(h > 0.0) {
+    if block >= problem.block_count() || x.len() != problem.variable_count() || h.is_nan() || h <= 0.0 {
         return f64::INFINITY;
     }
     let variables = problem.block_variables(block);
