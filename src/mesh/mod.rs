@@ -3,6 +3,7 @@
 //! normals, mixed Voronoi areas, ordered vertex stars (Fig. 7), per-face gradient operators,
 //! boundary loops, and unit scaling.
 
+mod edge_point;
 mod error;
 mod gradient;
 mod normals;
@@ -16,6 +17,7 @@ mod union_find;
 mod validation;
 mod voronoi_area;
 
+pub use edge_point::EdgePoint;
 pub use error::MeshError;
 pub use star::VertexStar;
 pub use topology::BoundaryEdge;
