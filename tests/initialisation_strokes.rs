@@ -47,7 +47,7 @@ fn stroke_points_are_projected_one_per_triangle() {
             // The stroke point is LIFT outside the cylinder; the chords of the mesh lie up to
             // e²/(8R) ≈ 0.01 inside it.
             let distance = (stroke[s.point] - on_mesh).norm();
-            assert!(distance >= LIFT - 1e-9 && distance <= LIFT + 0.02, "distance {distance}");
+            assert!((LIFT - 1e-9..=LIFT + 0.02).contains(&distance), "distance {distance}");
         }
     }
 }
@@ -84,4 +84,19 @@ fn auto_design_converges_to_the_sixty_degree_family() {
     assert!(report.angle_error_max_degrees <= 1.0, "max angle error {}°", report.angle_error_max_degrees);
     assert!(report.singular_vertices.is_empty());
     assert!(design.field.iter().all(|f| f.is_finite()) && design.field.len() == mesh.vertex_count());
+}
+
+#[test]
+fn the_design_does_not_depend_on_the_thread_count() {
+    let mesh = cylinder(800, 2);
+    let run = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().expect("thread pool");
+        pool.install(|| {
+            let options = AutoDesignOptions { max_iterations: 20, ..AutoDesignOptions::default() };
+            let design = auto_design(&mesh, &strokes(), &options).expect("valid strokes");
+            let bits = |v: &[f64]| v.iter().map(|f| f.to_bits()).collect::<Vec<u64>>();
+            (bits(&design.stroke_field), bits(&design.field), design.theta_degrees.to_bits())
+        })
+    };
+    assert!(run(1) == run(2), "one and two threads give different bits");
 }

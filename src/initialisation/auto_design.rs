@@ -91,7 +91,7 @@ pub fn auto_design(mesh: &TriMesh, strokes: &[Vec<Vec3>], options: &AutoDesignOp
         DesignStatus::UnsettledFlips { flips: report.flips }
     } else if !report.converged {
         DesignStatus::NotConverged { iterations: report.iterations }
-    } else if !(report.energies.angle <= options.angle_energy_tolerance) {
+    } else if report.energies.angle.is_nan() || report.energies.angle > options.angle_energy_tolerance {
         DesignStatus::AngleNotReached { energy: report.energies.angle }
     } else {
         DesignStatus::Succeeded

@@ -18,8 +18,8 @@ pub struct StrokeSample {
 }
 
 impl StrokeSample {
-    /// `u F0 + v F1 + t F2`: the piecewise linear field at the sample.
-    pub fn value(&self, mesh: &TriMesh, field: &[f64]) -> f64 {
+    /// `u F0 + v F1 + t F2`: the piecewise linear field at the sample (face and field must fit the mesh).
+    pub(crate) fn value(&self, mesh: &TriMesh, field: &[f64]) -> f64 {
         let corners = mesh.faces()[self.face as usize];
         corners.iter().zip(self.barycentric).map(|(&c, w)| w * field[c as usize]).sum()
     }
