@@ -37,7 +37,8 @@ pub enum DesignStatus {
     Succeeded,
     /// The field has singular vertices (level curves that branch or close around a vertex).
     SingularVertices { vertices: Vec<u32> },
-    /// Side vectors were still being re-oriented in the last iterations: the family is unstable.
+    /// Side vectors were still being re-oriented in the last `FieldSolver::step` call (at most
+    /// 10 iterations): the family is unstable.
     UnsettledFlips { flips: usize },
     /// The iteration cap was reached before the optimisation settled.
     NotConverged { iterations: usize },

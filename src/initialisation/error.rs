@@ -27,7 +27,8 @@ pub enum InitialisationError {
     StrokeTooShort { stroke: usize, points: usize },
     /// Point `point` of stroke `stroke` has a NaN or infinite coordinate.
     NonFiniteStrokePoint { stroke: usize, point: usize },
-    /// Point `point` of stroke `stroke` is farther than `max_distance` from the surface.
+    /// Point `point` of stroke `stroke` is farther than `max_distance` (in the mesh's length unit)
+    /// from the surface.
     StrokePointOffSurface { stroke: usize, point: usize, max_distance: f64 },
     /// Strokes `first` and `second` pass through the same triangle `face`: they cross (or touch).
     CrossingStrokes { first: usize, second: usize, face: u32 },
