@@ -97,9 +97,25 @@ namespace Lamella.Tests
             if (c.IsVoid) return managed == typeof(void) ? null : "void in C, " + managed.Name + " in C#";
             bool managedPointer = managed.IsByRef || managed.IsArray || typeof(SafeHandle).IsAssignableFrom(managed) || managed == typeof(IntPtr);
             if (c.IsPointer != managedPointer) return (c.IsPointer ? "pointer" : "value") + " " + c.Text + " in C, " + managed.Name + " in C#";
-            if (c.IsPointer) return null;
+            if (c.IsPointer) return PointeeMismatch(c, managed);
             int cSize = CSize(c.Base), managedSize = Marshal.SizeOf(managed.IsEnum ? Enum.GetUnderlyingType(managed) : managed);
             return cSize == managedSize ? null : c.Text + " has " + cSize + " bytes, " + managed.Name + " " + managedSize;
+        }
+
+        /// <summary>
+        /// A pointer to a header struct must be carried by its twin (by reference or as an array); a pointer to an
+        /// opaque handle LmlX by the SafeHandle XHandle, or by IntPtr in the _free functions.
+        /// </summary>
+        private static string PointeeMismatch(CType c, Type managed)
+        {
+            string name = c.Base.StartsWith("struct ", StringComparison.Ordinal) ? c.Base.Substring(7) : c.Base;
+            Type element = managed.IsByRef || managed.IsArray ? managed.GetElementType() : managed;
+            Type twin;
+            if (StructTwins.TryGetValue(name, out twin))
+                return element == twin ? null : c.Text + " in C, " + managed.Name + " in C#";
+            if (name.StartsWith("Lml", StringComparison.Ordinal) && name != "LmlStatus")
+                return element.Name == name.Substring(3) + "Handle" || managed == typeof(IntPtr) ? null : c.Text + " in C, " + managed.Name + " in C#";
+            return null;
         }
 
         private static int CSize(string type) => CLayout(type).Size;

@@ -9,7 +9,10 @@ namespace Lamella
     /// Loads the native library by full path before the first call, so that <c>[DllImport("lamella")]</c> finds it
     /// even when the host (Grasshopper) loaded the managed assembly from memory and would not search the plugin
     /// folder: <c>lamella.dll</c> with LoadLibrary on Windows, <c>liblamella.dylib</c> / <c>liblamella.so</c> with
-    /// dlopen on macOS / Linux.
+    /// dlopen on macOS / Linux. How the later <c>[DllImport]</c> calls bind to the loaded file depends on the runtime:
+    /// .NET Framework on Windows finds the loaded module by name; .NET (Rhino 8) is given the handle through a
+    /// DllImport resolver; Mono (Rhino 7 on macOS) searches the folder of Lamella.dll itself, so the native library
+    /// must sit next to it there (a library loaded elsewhere is reported, not silently ignored).
     /// </summary>
     public static class NativeLibraryLoader
     {
@@ -63,7 +66,7 @@ namespace Lamella
                     if (error == null)
                     {
                         loadedPath = path;
-                        Library.CheckAbiVersion();
+                        CheckBinding(path);
                         return path;
                     }
                     tried.Add(path + " (" + error + ")");
@@ -71,6 +74,21 @@ namespace Lamella
                 throw new DllNotFoundException(
                     "the Lamella native library " + FileName + " could not be loaded; tried:" + Environment.NewLine + "  " +
                     string.Join(Environment.NewLine + "  ", tried));
+            }
+        }
+
+        /// <summary>Makes the first [DllImport] call, which binds every later one, and checks the ABI version.</summary>
+        private static void CheckBinding(string path)
+        {
+            try
+            {
+                Library.CheckAbiVersion();
+            }
+            catch (DllNotFoundException e)
+            {
+                throw new DllNotFoundException(
+                    "the Lamella native library was loaded from " + path + " but [DllImport(\"lamella\")] did not bind to it (" +
+                    e.Message + "); on Mono, place " + FileName + " next to Lamella.dll", e);
             }
         }
 
@@ -121,6 +139,17 @@ namespace Lamella
         /// <summary>Loads <paramref name="path"/>; null on success, else the loader's error.</summary>
         private static string TryLoad(string path)
         {
+#if NETCOREAPP
+            // .NET: load through the runtime and hand the handle to every [DllImport] of this assembly.
+            IntPtr library;
+            if (!NativeLibrary.TryLoad(path, out library))
+            {
+                return "NativeLibrary.TryLoad failed";
+            }
+            NativeLibrary.SetDllImportResolver(typeof(NativeLibraryLoader).Assembly,
+                (name, assembly, searchPath) => name == Interop.NativeMethods.Library ? library : IntPtr.Zero);
+            return null;
+#else
             switch (CurrentPlatform())
             {
                 case Platform.Windows:
@@ -129,11 +158,16 @@ namespace Lamella
                         return null;
                     }
                     return "LoadLibrary error " + Marshal.GetLastWin32Error();
+                // dlerror is called first so that the runtime binds it (binding itself calls dlsym, which would
+                // clear the message of a failed dlopen) and any stale message is cleared.
                 case Platform.MacOS:
+                    MacDl.dlerror();
                     return DlopenResult(MacDl.dlopen(path, Unix.RtldNowGlobal), MacDl.dlerror);
                 default:
+                    LinuxDl.dlerror();
                     return DlopenResult(LinuxDl.dlopen(path, Unix.RtldNowGlobal), LinuxDl.dlerror);
             }
+#endif
         }
 
         private static string DlopenResult(IntPtr handle, Func<IntPtr> dlerror)
