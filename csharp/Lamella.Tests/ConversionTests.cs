@@ -120,3 +120,43 @@ namespace Lamella.Tests
         }
     }
 }
+
+namespace Lamella.Tests
+{
+    [TestFixture]
+    public class SignatureTests
+    {
+        [Test]
+        public void SignatureChangesWithAnyInputBit()
+        {
+            double[] xyz = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+            int[] tris = { 0, 1, 2 };
+            string a = Signature.Of(xyz, tris, 60, 1);
+            Assert.AreEqual(64, a.Length);
+            Assert.AreEqual(a, Signature.Of((double[])xyz.Clone(), (int[])tris.Clone(), 60, 1), "deterministic");
+            Assert.AreNotEqual(a, Signature.Of(xyz, tris, 60, 1.0000000000000002), "one ulp of a parameter");
+            Assert.AreNotEqual(a, Signature.Of(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 1e-300 }, tris, 60, 1), "a coordinate");
+            Assert.AreNotEqual(a, Signature.Of(xyz, new[] { 0, 2, 1 }, 60, 1), "the orientation");
+            Assert.AreNotEqual(a, Signature.Of(xyz, tris, 60), "the parameter count");
+        }
+    }
+}
+
+namespace Lamella.Tests
+{
+    [TestFixture]
+    public class StartFieldTests
+    {
+        [Test]
+        public void HeightAlongANormalisedDirection()
+        {
+            double[] xyz = { 1, 2, 3, -1, 0, 4 };
+            CollectionAssert.AreEqual(new double[] { 3, 4 }, StartField.Height(xyz, 0, 0, 7));
+            double[] diagonal = StartField.Height(xyz, 1, 1, 0);
+            Assert.AreEqual(3 / Math.Sqrt(2), diagonal[0], 1e-15);
+            Assert.AreEqual(-1 / Math.Sqrt(2), diagonal[1], 1e-15);
+            Assert.Throws<ArgumentException>(() => StartField.Height(xyz, 0, 0, 0));
+            Assert.Throws<ArgumentException>(() => StartField.Height(xyz, double.NaN, 0, 1));
+        }
+    }
+}

@@ -43,6 +43,14 @@ namespace Lamella
         /// <summary>True when the final stage has converged: further steps do nothing.</summary>
         public bool IsConverged => Converged != 0;
 
+        /// <summary>A multi-line summary for display: iterations, stage, energies, angle errors, singular vertices.</summary>
+        public string Describe() =>
+            string.Format(System.Globalization.CultureInfo.InvariantCulture,
+                "{0}\niterations {1} (last step {2}), stage {3}\nE_fair {4:0.###e+0}, E_grad {5:0.###e+0}, E_angle {6:0.###e+0}, E_frame {7:0.###e+0}, weighted total {8:0.###e+0}\n" +
+                "angle error: max {9:0.###}°, rms {10:0.###}° over {11} vertices\nsingular vertices {12}, flips {13}, damping {14:0.###e+0}",
+                IsConverged ? "converged" : "not converged", Iterations, IterationsThisStep, Stage, EnergyFair, EnergyGrad, EnergyAngle,
+                EnergyFrame, EnergyTotal, AngleErrorMaxDegrees, AngleErrorRmsDegrees, MeasuredVertices, SingularVertexCount, Flips, Damping);
+
         /// <inheritdoc />
         public override string ToString() =>
             string.Format(System.Globalization.CultureInfo.InvariantCulture,
