@@ -34,30 +34,30 @@ namespace Lamella.Grasshopper
     public sealed class FieldGoo : GH_Goo<FieldData>
     {
         public FieldGoo(FieldData data) : base(data) { }
-        public override bool IsValid => m_value != null;
+        public override bool IsValid => Value != null;
         public override string TypeName => "Lamella Field";
         public override string TypeDescription => "A P-curve field on a mesh (a native Lamella solver session)";
-        public override IGH_Goo Duplicate() => new FieldGoo(m_value);
-        public override string ToString() => m_value == null ? "no field" : "Lamella field, θ = " + m_value.ThetaDegrees + "°";
+        public override IGH_Goo Duplicate() => new FieldGoo(Value);
+        public override string ToString() => Value == null ? "no field" : "Lamella field, θ = " + Value.ThetaDegrees + "°";
     }
 
     public sealed class CurvesGoo : GH_Goo<CurvesData>
     {
         public CurvesGoo(CurvesData data) : base(data) { }
-        public override bool IsValid => m_value != null;
+        public override bool IsValid => Value != null;
         public override string TypeName => "Lamella Curves";
         public override string TypeDescription => "Level curves of a Lamella field";
-        public override IGH_Goo Duplicate() => new CurvesGoo(m_value);
-        public override string ToString() => m_value == null ? "no curves" : "Lamella level curves";
+        public override IGH_Goo Duplicate() => new CurvesGoo(Value);
+        public override string ToString() => Value == null ? "no curves" : "Lamella level curves";
     }
 
     public sealed class StripsGoo : GH_Goo<Strips>
     {
         public StripsGoo(Strips strips) : base(strips) { }
-        public override bool IsValid => m_value != null;
+        public override bool IsValid => Value != null;
         public override string TypeName => "Lamella Strips";
         public override string TypeDescription => "Rectifying developable strips with their unrollings and metrics";
-        public override IGH_Goo Duplicate() => new StripsGoo(m_value);
-        public override string ToString() => m_value == null ? "no strips" : "Lamella strips";
+        public override IGH_Goo Duplicate() => new StripsGoo(Value);
+        public override string ToString() => Value == null ? "no strips" : "Lamella strips";
     }
 }

@@ -78,13 +78,14 @@ namespace Grasshopper.Kernel
         public virtual GH_Exposure Exposure { get { throw new NotSupportedException("facade"); } }
         protected virtual Bitmap Icon { get { throw new NotSupportedException("facade"); } }
         public GH_Document OnPingDocument() { throw new NotSupportedException("facade"); }
+        public virtual void ExpireSolution(bool recompute) { throw new NotSupportedException("facade"); }
     }
 
     public abstract class GH_ActiveObject : GH_DocumentObject
     {
         internal GH_ActiveObject() { throw new NotSupportedException("facade"); }
         public void AddRuntimeMessage(GH_RuntimeMessageLevel level, string text) { throw new NotSupportedException("facade"); }
-        public virtual void ExpireSolution(bool recompute) { throw new NotSupportedException("facade"); }
+        public override void ExpireSolution(bool recompute) { throw new NotSupportedException("facade"); }
     }
 
     public abstract class GH_Component : GH_ActiveObject
@@ -134,7 +135,6 @@ namespace Grasshopper.Kernel.Types
 
     public abstract class GH_Goo<T> : IGH_Goo
     {
-        protected T m_value;
         protected GH_Goo() { throw new NotSupportedException("facade"); }
         protected GH_Goo(T internal_data) { throw new NotSupportedException("facade"); }
         public virtual T Value { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
