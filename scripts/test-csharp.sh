@@ -13,7 +13,8 @@ build="$target/csharp"
 facades="$build/facades"
 
 missing=()
-command -v mcs >/dev/null || missing+=(mono-devel)
+# mono-devel brings mcs and the .NET Framework 4.8 reference assemblies (mcs alone comes from mono-mcs).
+{ command -v mcs >/dev/null && [ -f /usr/lib/mono/4.8-api/mscorlib.dll ]; } || missing+=(mono-devel)
 command -v nunit-console >/dev/null || missing+=(nunit-console)
 [ -f /usr/lib/pkgconfig/nunit.pc ] || missing+=(libnunit-cil-dev)
 if ((${#missing[@]})); then
