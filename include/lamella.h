@@ -366,6 +366,12 @@ const char *lml_last_error_message(void);
 // (the panic message may be printed to stderr).
 LmlStatus lml_debug_trigger_panic(void);
 
+// The number of handles (`LmlMesh`, `LmlField`, `LmlCurves` and `LmlStrips` together) created
+// and not yet freed in this process, over all threads: lets bindings and the C test harness
+// check that every handle is released (e.g. by a garbage collector's finalizers). Has no other
+// effect.
+size_t lml_debug_live_handles(void);
+
 // Creates a mesh from flat arrays and validates it.
 //
 // - `xyz`: `3 * vertex_count` doubles, vertex `i` at `xyz[3i..3i+3]` (x, y, z), any length unit.

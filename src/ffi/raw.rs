@@ -4,6 +4,7 @@
 //! elements, or at a live handle) is the caller's contract, stated in the header.
 
 use super::failure::Failure;
+use super::live_handles;
 use super::status::LmlStatus;
 use std::ffi::{c_char, CStr};
 
@@ -127,6 +128,7 @@ impl<T> Out<*mut T> {
     /// Hands a new handle owning `value` to the caller, who releases it with [`release`].
     pub fn set_owned(&mut self, value: T) {
         self.set(Box::into_raw(Box::new(value)));
+        live_handles::created();
     }
 }
 
@@ -138,5 +140,6 @@ pub(crate) unsafe fn release<T>(ptr: *mut T) {
     if !ptr.is_null() {
         // SAFETY: by contract `ptr` is an unreleased `Box<T>` pointer.
         drop(unsafe { Box::from_raw(ptr) });
+        live_handles::released();
     }
 }

@@ -30,6 +30,8 @@ int main(int argc, char **argv)
     }
     lml_field_free(field);
     cylinder_free(&cylinder);
+    /* Every handle created above (including those of the threads test) has been freed. */
+    CHECK(lml_debug_live_handles() == 0);
     CHECK(every_status_seen());
     return check_summary();
 }

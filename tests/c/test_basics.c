@@ -9,6 +9,7 @@ void test_basics(void)
     const char *version = lml_version();
     CHECK(version != NULL && strlen(version) >= 5 && strchr(version, '.') != NULL);
     CHECK(lml_abi_version() == LML_ABI_VERSION);
+    CHECK(lml_debug_live_handles() == 0);
 
     CHECK(strcmp(lml_status_name(LML_STATUS_NOT_A_DISK), "LML_STATUS_NOT_A_DISK") == 0);
     CHECK(strcmp(lml_status_name(LML_STATUS_OK), "LML_STATUS_OK") == 0);

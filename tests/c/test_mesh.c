@@ -37,6 +37,7 @@ static void lifecycle_and_accessors(void)
 
     CHECK_STATUS(lml_mesh_new(square_xyz, 4, square_triangles, 2, &mesh), LML_STATUS_OK);
     CHECK(mesh != NULL);
+    CHECK(lml_debug_live_handles() == 1);
     CHECK_STATUS(lml_mesh_vertex_count(mesh, &count), LML_STATUS_OK);
     CHECK(count == 4);
     CHECK_STATUS(lml_mesh_triangle_count(mesh, &count), LML_STATUS_OK);
@@ -67,6 +68,7 @@ static void lifecycle_and_accessors(void)
 
     lml_mesh_free(mesh);
     lml_mesh_free(NULL);
+    CHECK(lml_debug_live_handles() == 0);
 }
 
 static void invalid_arrays(void)

@@ -1,0 +1,72 @@
+using System;
+using System.Drawing;
+using Grasshopper.Kernel;
+using Grasshopper.Kernel.Types;
+
+namespace Lamella.Grasshopper
+{
+    /// <summary>
+    /// The common frame of the Lamella components: tab "Lamella", icon by name, the native library loaded before
+    /// the first call, and every failure (bad input, a native status, a replaced upstream result) turned into a
+    /// component error instead of an exception.
+    /// </summary>
+    public abstract class LamellaComponent : GH_Component
+    {
+        private readonly string iconName;
+
+        protected LamellaComponent(string name, string nickname, string description, string iconName)
+            : base(name, nickname, description, "Lamella", "Strips")
+        {
+            this.iconName = iconName;
+        }
+
+        protected override Bitmap Icon => Icons.Load(iconName);
+
+        protected sealed override void SolveInstance(IGH_DataAccess DA)
+        {
+            string loadError = NativeSetup.EnsureLoaded();
+            if (loadError != null)
+            {
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Error, loadError);
+                return;
+            }
+            try
+            {
+                Solve(DA);
+            }
+            catch (LamellaException e)
+            {
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Error, e.NativeMessage + " (" + Library.StatusName(e.Status) + ")");
+            }
+            catch (ObjectDisposedException)
+            {
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Error, "the upstream result was replaced; it will be recomputed");
+            }
+            catch (Exception e)
+            {
+                // Contract with Grasshopper: never let an exception escape a component.
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Error, e.GetType().Name + ": " + e.Message);
+            }
+        }
+
+        /// <summary>The component's work; inputs already read by the caller are checked here.</summary>
+        protected abstract void Solve(IGH_DataAccess DA);
+
+        /// <summary>The value of a goo input, or an error message when it is missing or of another type.</summary>
+        protected T GooValue<TGoo, T>(IGH_DataAccess DA, int index, string what) where TGoo : GH_Goo<T> where T : class
+        {
+            IGH_Goo goo = null;
+            if (!DA.GetData(index, ref goo) || goo == null)
+            {
+                return null;
+            }
+            var typed = goo as TGoo;
+            if (typed == null || typed.Value == null)
+            {
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Error, "input is a " + goo.TypeName + ", not " + what);
+                return null;
+            }
+            return typed.Value;
+        }
+    }
+}

@@ -1,0 +1,72 @@
+using System;
+using System.Collections.Generic;
+using Lamella.Conversion;
+using Rhino.Geometry;
+
+namespace Lamella.Grasshopper
+{
+    /// <summary>
+    /// Rhino geometry ↔ the flat arrays of the binding. Each function only copies numbers; the array logic
+    /// (triangulating quads, cutting packed arrays, laying out flat strips) lives in Lamella.Conversion, tested on
+    /// plain arrays.
+    /// </summary>
+    internal static class RhinoConversion
+    {
+        /// <summary>The mesh's vertices (x, y, z each) and its faces as triangles (quads split along the shorter diagonal).</summary>
+        public static void MeshToArrays(Mesh mesh, out double[] xyz, out int[] triangles)
+        {
+            Point3d[] points = mesh.Vertices.ToPoint3dArray();
+            xyz = new double[3 * points.Length];
+            for (int i = 0; i < points.Length; i++)
+            {
+                xyz[3 * i] = points[i].X;
+                xyz[3 * i + 1] = points[i].Y;
+                xyz[3 * i + 2] = points[i].Z;
+            }
+            var corners = new int[4 * mesh.Faces.Count];
+            for (int f = 0; f < mesh.Faces.Count; f++)
+            {
+                MeshFace face = mesh.Faces[f];
+                corners[4 * f] = face.A;
+                corners[4 * f + 1] = face.B;
+                corners[4 * f + 2] = face.C;
+                corners[4 * f + 3] = face.D;
+            }
+            triangles = MeshArrays.Triangulate(xyz, corners);
+        }
+
+        public static Point3d Point(double[] xyz, int i) => new Point3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+
+        /// <summary>One polyline curve per item of a packed point array (x, y, z per point).</summary>
+        public static List<PolylineCurve> Polylines(double[] points, int[] offsets)
+        {
+            var curves = new List<PolylineCurve>();
+            foreach (double[] item in Packing.Unpack(new Packed(points, offsets, 3)))
+            {
+                var vertices = new List<Point3d>(item.Length / 3);
+                for (int i = 0; i < item.Length / 3; i++) vertices.Add(Point(item, i));
+                curves.Add(new PolylineCurve(vertices));
+            }
+            return curves;
+        }
+
+        /// <summary>A quad mesh from vertices (x, y, z each) and four indices per quad.</summary>
+        public static Mesh QuadMesh(double[] xyz, int[] quads)
+        {
+            var mesh = new Mesh();
+            for (int i = 0; i < xyz.Length / 3; i++) mesh.Vertices.Add(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+            for (int q = 0; q < quads.Length / 4; q++) mesh.Faces.AddFace(quads[4 * q], quads[4 * q + 1], quads[4 * q + 2], quads[4 * q + 3]);
+            mesh.Normals.ComputeNormals();
+            mesh.Compact();
+            return mesh;
+        }
+
+        /// <summary>One line per segment of six values (x0 y0 z0 x1 y1 z1).</summary>
+        public static List<Line> Lines(double[] segments)
+        {
+            var lines = new List<Line>(segments.Length / 6);
+            for (int i = 0; i < segments.Length / 6; i++) lines.Add(new Line(Point(segments, 2 * i), Point(segments, 2 * i + 1)));
+            return lines;
+        }
+    }
+}

@@ -1,0 +1,62 @@
+using System;
+
+namespace Lamella.Tests
+{
+    /// <summary>
+    /// A test surface: a patch of the cylinder of radius 10 over a 150° span and height 15, triangulated from a
+    /// jittered grid with alternating diagonals (irregular, no directional bias), normals pointing away from the axis.
+    /// The initial field is a perturbed height function, so the solver has real work to do.
+    /// </summary>
+    internal sealed class Cylinder
+    {
+        public const double Radius = 10.0;
+        public const double SpanDegrees = 150.0;
+        public const double Height = 15.0;
+
+        public readonly double[] Xyz;
+        public readonly int[] Triangles;
+        public readonly double[] InitialField;
+        public int VertexCount => Xyz.Length / 3;
+
+        public Cylinder(int columns, int rows, int seed)
+        {
+            double arc = Radius * SpanDegrees * Math.PI / 180.0, ds = arc / columns, dz = Height / rows;
+            var random = new Random(seed);
+            Xyz = new double[3 * (columns + 1) * (rows + 1)];
+            InitialField = new double[(columns + 1) * (rows + 1)];
+            for (int j = 0; j <= rows; j++)
+            {
+                for (int i = 0; i <= columns; i++)
+                {
+                    int v = j * (columns + 1) + i;
+                    // Interior grid points move by up to a quarter cell; the boundary stays straight.
+                    double s = ds * (i + (i > 0 && i < columns ? 0.5 * (random.NextDouble() - 0.5) : 0));
+                    double z = dz * (j + (j > 0 && j < rows ? 0.5 * (random.NextDouble() - 0.5) : 0));
+                    Xyz[3 * v] = Radius * Math.Cos(s / Radius);
+                    Xyz[3 * v + 1] = Radius * Math.Sin(s / Radius);
+                    Xyz[3 * v + 2] = z;
+                    InitialField[v] = z + 0.8 * Math.Sin(s / 9.0) + 0.3 * Math.Cos(z / 5.0);
+                }
+            }
+            Triangles = new int[6 * columns * rows];
+            int t = 0;
+            for (int j = 0; j < rows; j++)
+            {
+                for (int i = 0; i < columns; i++)
+                {
+                    int a = j * (columns + 1) + i, b = a + 1, d = a + columns + 1, e = d + 1;
+                    int[] cell = (i + j) % 2 == 0 ? new[] { a, b, e, a, e, d } : new[] { a, b, d, b, e, d };
+                    Array.Copy(cell, 0, Triangles, t, 6);
+                    t += 6;
+                }
+            }
+        }
+
+        /// <summary>The analytic unit normal at a point on the cylinder (radial).</summary>
+        public static double[] Normal(double[] p, int index)
+        {
+            double r = Math.Sqrt(p[3 * index] * p[3 * index] + p[3 * index + 1] * p[3 * index + 1]);
+            return new[] { p[3 * index] / r, p[3 * index + 1] / r, 0.0 };
+        }
+    }
+}

@@ -1,0 +1,68 @@
+using System;
+using System.Threading;
+using NUnit.Framework;
+
+namespace Lamella.Tests
+{
+    /// <summary>Handles are released exactly once: by Dispose (twice is harmless) or, when leaked, by the finalizers.</summary>
+    [TestFixture]
+    public class LifetimeTests
+    {
+        private static void Collect()
+        {
+            GC.Collect();
+            GC.WaitForPendingFinalizers();
+            GC.Collect();
+            GC.WaitForPendingFinalizers();
+        }
+
+        [Test]
+        public void DisposingTwiceIsHarmlessAndUseAfterDisposeThrows()
+        {
+            Collect();
+            long before = Library.DebugLiveHandles;
+            var c = new Cylinder(12, 8, 5);
+            var mesh = LamellaMesh.FromArrays(c.Xyz, c.Triangles);
+            var field = new FieldSolver(mesh, c.InitialField, FieldParams.Default(Family.PseudoGeodesic, 60));
+            var curves = LevelCurves.Uniform(field, 2, 1.0);
+            var strips = Strips.Build(curves, StripParams.Default(60, 0.5));
+            Assert.AreEqual(before + 4, Library.DebugLiveHandles);
+            foreach (IDisposable d in new IDisposable[] { strips, curves, field, mesh })
+            {
+                d.Dispose();
+                d.Dispose();
+            }
+            Assert.AreEqual(before, Library.DebugLiveHandles);
+            Assert.Throws<ObjectDisposedException>(() => { var n = mesh.VertexCount; });
+            Assert.Throws<ObjectDisposedException>(() => field.Step(1));
+            Assert.Throws<ObjectDisposedException>(() => curves.Points());
+            Assert.Throws<ObjectDisposedException>(() => { var n = strips.Count; });
+        }
+
+        [Test]
+        public void LeakedHandlesAreFreedByFinalizers()
+        {
+            Collect();
+            Assert.AreEqual(0L, Library.DebugLiveHandles, "no handle may be alive between tests");
+            long whileAlive = -1;
+            // Created on a thread that then ends, so that no stack slot (Mono scans stacks conservatively)
+            // keeps the leaked objects reachable.
+            var worker = new Thread(() =>
+            {
+                var c = new Cylinder(12, 8, 9);
+                var mesh = LamellaMesh.FromArrays(c.Xyz, c.Triangles);
+                var field = new FieldSolver(mesh, c.InitialField, FieldParams.Default(Family.PseudoGeodesic, 60));
+                field.Step(2);
+                var curves = LevelCurves.Uniform(field, 2, 1.0);
+                Strips.Build(curves, StripParams.Default(60, 0.5));
+                FieldSolver.Load(field.Save());
+                whileAlive = Library.DebugLiveHandles;
+            });
+            worker.Start();
+            worker.Join();
+            Assert.AreEqual(5L, whileAlive);
+            Collect();
+            Assert.AreEqual(0L, Library.DebugLiveHandles);
+        }
+    }
+}

@@ -1,0 +1,362 @@
+using System;
+using NUnit.Framework;
+
+namespace Lamella.Tests
+{
+    /// <summary>
+    /// The whole pipeline through the binding against the real native library: a C#-generated cylinder → field
+    /// (θ = 60°, stepped until converged) → level curves → strips → unrolled strips, each checked against the
+    /// cylinder's analytic geometry, not just counted.
+    /// </summary>
+    [TestFixture]
+    public class PipelineTests
+    {
+        private const double Theta = 60.0;
+        private const double Width = 1.0;
+        private const int CurveCount = 5;
+        private const double Spacing = 1.0;
+
+        private Cylinder cylinder;
+        private FieldSolver field;
+        private FieldReport start, final;
+        private long totalIterations;
+        private LevelCurves curves;
+        private Strips strips;
+
+        [TestFixtureSetUp]
+        public void Solve()
+        {
+            // 40 x 24 cells of about 0.65 x 0.63: 1025 vertices.
+            cylinder = new Cylinder(40, 24, 7);
+            using (var mesh = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            {
+                field = new FieldSolver(mesh, cylinder.InitialField, FieldParams.Default(Family.PseudoGeodesic, Theta));
+            }
+            start = field.Report;
+            FieldReport report;
+            do
+            {
+                report = field.Step(5);
+                totalIterations += (long)report.IterationsThisStep;
+            } while (!report.IsConverged && totalIterations < 300);
+            final = report;
+            Console.WriteLine("  field: " + final);
+            curves = LevelCurves.Uniform(field, CurveCount, Spacing);
+            strips = Strips.Build(curves, StripParams.Default(Theta, Width));
+        }
+
+        [TestFixtureTearDown]
+        public void Release()
+        {
+            strips?.Dispose();
+            curves?.Dispose();
+            field?.Dispose();
+        }
+
+        [Test]
+        public void FieldConvergesWithinTheCoresBound()
+        {
+            Assert.Greater(start.AngleErrorMaxDegrees, 5.0, "the start must not already be the answer");
+            Assert.IsTrue(final.IsConverged, "not converged after " + final.Iterations + " iterations");
+            Assert.AreEqual(totalIterations, (long)final.Iterations);
+            // tests/field_cylinder.rs: E_angle ≤ 1e-5, max angle error ≤ 0.5°, no singular vertices.
+            Assert.LessOrEqual(final.EnergyAngle, 1e-5);
+            Assert.LessOrEqual(final.AngleErrorMaxDegrees, 0.5);
+            Assert.LessOrEqual(final.AngleErrorRmsDegrees, final.AngleErrorMaxDegrees);
+            Assert.AreEqual(0UL, final.SingularVertexCount);
+            Assert.AreEqual(0, field.SingularVertices().Length);
+            // Interior vertices of the 41 x 25 grid: 39 x 23 = 897; nearly all measured.
+            Assert.Greater(final.MeasuredVertices, 800UL);
+            // Converged: a further step does nothing.
+            var again = field.Step(5);
+            Assert.IsTrue(again.IsConverged);
+            Assert.AreEqual(0UL, again.IterationsThisStep);
+        }
+
+        [Test]
+        public void BinormalsMeetTheAnalyticNormalAtTheta()
+        {
+            double[] b = field.Binormals(), u = field.SideVectors();
+            Assert.AreEqual(3 * cylinder.VertexCount, b.Length);
+            Assert.AreEqual(3 * cylinder.VertexCount, u.Length);
+            double worstAngle = 0, worstUnit = 0, worstTangent = 0;
+            int framed = 0;
+            for (int v = 0; v < cylinder.VertexCount; v++)
+            {
+                double[] bv = Vec.At(b, v), uv = Vec.At(u, v), n = Cylinder.Normal(cylinder.Xyz, v);
+                if (Vec.Norm(bv) == 0) continue; // boundary vertex
+                framed++;
+                worstUnit = Math.Max(worstUnit, Math.Abs(Vec.Norm(bv) - 1));
+                // b is fixed up to sign: the side vector picks the family (paper Fig. 8).
+                double bn = Vec.Dot(bv, n) * (Vec.Dot(bv, uv) < 0 ? -1 : 1);
+                worstAngle = Math.Max(worstAngle, Math.Abs(Vec.Degrees(bn) - Theta));
+                worstTangent = Math.Max(worstTangent, Math.Abs(Vec.Dot(uv, n)));
+            }
+            Console.WriteLine("  frames at {0} vertices: max |angle(b, n) - 60| = {1:0.000}°", framed, worstAngle);
+            Assert.AreEqual(39 * 23, framed);
+            Assert.Less(worstUnit, 1e-9);
+            // Against the analytic normal, not the mesh's vertex normal the solver uses (they differ by a
+            // fraction of the angle between neighbouring faces, h / R ≈ 3.7° here): 2° as in the C harness.
+            Assert.Less(worstAngle, 2.0);
+            Assert.Less(worstTangent, Math.Sin(2.0 * Math.PI / 180));
+        }
+
+        [Test]
+        public void LevelCurvesLieOnTheCylinderAtUniformLevels()
+        {
+            double[] values = field.Values();
+            double min = double.PositiveInfinity, max = double.NegativeInfinity;
+            foreach (double f in values) { min = Math.Min(min, f); max = Math.Max(max, f); }
+            // A level may cross the patch in more than one piece (cut by the boundary), so there are at least
+            // as many polylines as levels, each at one of the uniform values, in level order.
+            int count = curves.Count;
+            Assert.GreaterOrEqual(count, CurveCount);
+            double[] levels = curves.Levels();
+            Assert.AreEqual(count, levels.Length);
+            var uniform = new double[CurveCount];
+            for (int k = 0; k < CurveCount; k++) uniform[k] = min + (k + 1) * (max - min) / (CurveCount + 1);
+            int matched = 0;
+            for (int c = 0; c < count; c++)
+            {
+                while (matched < CurveCount && Math.Abs(levels[c] - uniform[matched]) > 1e-12 * (max - min)) matched++;
+                Assert.Less(matched, CurveCount, "polyline " + c + " has level " + levels[c] + ", not one of the uniform levels in order");
+            }
+            int[] offsets = curves.Offsets();
+            double[] points = curves.Points(), normals = curves.Normals();
+            Assert.AreEqual(count + 1, offsets.Length);
+            Assert.AreEqual(3 * offsets[count], points.Length);
+            Assert.AreEqual(points.Length, normals.Length);
+            CollectionAssert.AreEqual(new bool[count], curves.Closed(), "no level set of the patch is closed");
+            double offSurface = 0, normalError = 0, angleSum = 0;
+            int angles = 0;
+            for (int c = 0; c < count; c++)
+            {
+                Assert.GreaterOrEqual(offsets[c + 1] - offsets[c], 3);
+                for (int p = offsets[c]; p < offsets[c + 1]; p++)
+                {
+                    double[] x = Vec.At(points, p), n = Cylinder.Normal(points, p);
+                    offSurface = Math.Max(offSurface, Math.Abs(Math.Sqrt(x[0] * x[0] + x[1] * x[1]) - Cylinder.Radius));
+                    normalError = Math.Max(normalError, 1 - Vec.Dot(Vec.At(normals, p), n));
+                    if (p > offsets[c] && p + 1 < offsets[c + 1])
+                    {
+                        angleSum += Math.Abs(BinormalAngle(Vec.At(points, p - 1), x, Vec.At(points, p + 1)) - Theta);
+                        angles++;
+                    }
+                    // Resampled at the requested spacing (the last segment of a curve may be shorter).
+                    if (p + 2 < offsets[c + 1])
+                    {
+                        Assert.AreEqual(Spacing, Vec.Distance(x, Vec.At(points, p + 1)), 0.25 * Spacing);
+                    }
+                }
+            }
+            Console.WriteLine("  curves: max |r - R| {0:0.00e0}, mean binormal angle error {1:0.00}°", offSurface, angleSum / angles);
+            // On the mesh: chords deviate from the cylinder by at most the sagitta h² / (8R) ≈ 0.01.
+            Assert.Less(offSurface, 0.02);
+            Assert.Less(normalError, 1 - Math.Cos(4 * Math.PI / 180));
+            // Level polylines of the 60° field, before any strip optimisation: pseudo-geodesics up to the
+            // field's discretisation (3° on average, as the C harness allows).
+            Assert.Less(angleSum / angles, 3.0);
+        }
+
+        [Test]
+        public void StripsArePlanarDevelopableAndUnrollStraight()
+        {
+            int s = strips.Count;
+            Assert.AreEqual(curves.Count, s, "a strip on every polyline");
+            Assert.AreEqual(0, strips.Skipped().Length);
+            int[] points = strips.PointOffsets(), vertices = strips.VertexOffsets(), quadOffsets = strips.QuadOffsets();
+            double[] xyz = strips.Vertices(), flat = strips.UnrolledVertices(), centres = strips.Centres(), rulings = strips.Rulings(), flatCentres = strips.UnrolledCentres();
+            int[] quads = strips.Quads();
+            Assert.AreEqual(3 * vertices[s], xyz.Length);
+            Assert.AreEqual(2 * vertices[s], flat.Length);
+            Assert.AreEqual(3 * points[s], centres.Length);
+            Assert.AreEqual(3 * points[s], rulings.Length);
+            Assert.AreEqual(2 * points[s], flatCentres.Length);
+            Assert.AreEqual(4 * quadOffsets[s], quads.Length);
+            double planar = 0, isometry = 0, straight = 0, width = 0, offSurface = 0, midpoint = 0, unit = 0, angle = 0;
+            for (int i = 0; i < s; i++)
+            {
+                int n = points[i + 1] - points[i], o = vertices[i];
+                Assert.AreEqual(2 * n, vertices[i + 1] - o);
+                Assert.AreEqual(n - 1, quadOffsets[i + 1] - quadOffsets[i]);
+                for (int q = quadOffsets[i]; q < quadOffsets[i + 1]; q++)
+                {
+                    int j = q - quadOffsets[i];
+                    int[] v = { quads[4 * q], quads[4 * q + 1], quads[4 * q + 2], quads[4 * q + 3] };
+                    CollectionAssert.AreEqual(new[] { o + j, o + j + 1, o + n + j + 1, o + n + j }, v);
+                    planar = Math.Max(planar, NonPlanarity(Vec.At(xyz, v[0]), Vec.At(xyz, v[1]), Vec.At(xyz, v[2]), Vec.At(xyz, v[3])));
+                    // Congruent to the unrolled quad: four sides and both diagonals keep their lengths.
+                    int[,] pairs = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 0, 2 }, { 1, 3 } };
+                    for (int k = 0; k < 6; k++)
+                    {
+                        int a = v[pairs[k, 0]], b = v[pairs[k, 1]];
+                        isometry = Math.Max(isometry, Math.Abs(Vec.Distance(Vec.At(xyz, a), Vec.At(xyz, b)) - Vec.Distance2(flat, a, b)));
+                    }
+                }
+                // The unrolled centre line: distance of each point from the chord of its end points.
+                int first = points[i], last = points[i + 1] - 1;
+                double ax = flatCentres[2 * first], ay = flatCentres[2 * first + 1], bx = flatCentres[2 * last], by = flatCentres[2 * last + 1];
+                double chord = Math.Sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay)), length = 0;
+                for (int j = first; j < last; j++) length += Vec.Distance2(flatCentres, j, j + 1);
+                for (int j = 0; j < n; j++)
+                {
+                    int p = first + j;
+                    double off = Math.Abs((bx - ax) * (flatCentres[2 * p + 1] - ay) - (by - ay) * (flatCentres[2 * p] - ax)) / chord;
+                    straight = Math.Max(straight, off / length);
+                    foreach (int fv in new[] { o + j, o + n + j })
+                    {
+                        double side = Math.Abs((bx - ax) * (flat[2 * fv + 1] - ay) - (by - ay) * (flat[2 * fv] - ax)) / chord;
+                        width = Math.Max(width, Math.Abs(side - 0.5 * Width));
+                    }
+                    double[] c = Vec.At(centres, p), l = Vec.At(xyz, o + j), r = Vec.At(xyz, o + n + j);
+                    for (int k = 0; k < 3; k++) midpoint = Math.Max(midpoint, Math.Abs(0.5 * (l[k] + r[k]) - c[k]));
+                    offSurface = Math.Max(offSurface, Math.Abs(Math.Sqrt(c[0] * c[0] + c[1] * c[1]) - Cylinder.Radius));
+                    unit = Math.Max(unit, Math.Abs(Vec.Norm(Vec.At(rulings, p)) - 1));
+                    if (j > 0 && j + 1 < n)
+                    {
+                        angle = Math.Max(angle, Math.Abs(BinormalAngle(Vec.At(centres, p - 1), c, Vec.At(centres, p + 1)) - Theta));
+                    }
+                }
+            }
+            Console.WriteLine("  strips: non-planarity {0:0.0e0}, isometry {1:0.0e0}, straightness {2:0.0e0}, width {3:0.0e0}, |angle - 60| {4:0.000}°",
+                planar, isometry, straight, width, angle);
+            // The C harness's thresholds (measured values there have a margin of ~50).
+            Assert.Less(planar, 1e-5);
+            Assert.Less(isometry, 1e-9 * Width);
+            Assert.Less(straight, 2e-5);
+            Assert.Less(width, 5e-4 * Width);
+            Assert.Less(midpoint, 1e-9);
+            Assert.Less(unit, 1e-9);
+            // The centre lines are θ-pseudo-geodesics of the cylinder itself: discrete binormals against the analytic normal.
+            Assert.LessOrEqual(angle, 1.5);
+            Assert.Less(offSurface, 0.02);
+        }
+
+        [Test]
+        public void MetricsAgreeWithThePatternSummary()
+        {
+            StripMetrics[] metrics = strips.Metrics();
+            PatternMetrics pattern = strips.PatternMetrics;
+            Assert.AreEqual(strips.Count, metrics.Length);
+            Assert.AreEqual((ulong)metrics.Length, pattern.StripCount);
+            Assert.AreEqual(0UL, pattern.SkippedCount);
+            double worstTheta = 0, sumPlanar = 0;
+            for (int i = 0; i < metrics.Length; i++)
+            {
+                Assert.AreEqual((ulong)i, metrics[i].Curve);
+                Assert.AreEqual(CentreLength(i), metrics[i].Length, 1e-9 * metrics[i].Length);
+                Assert.AreEqual(0UL, metrics[i].FlippedQuads);
+                Assert.AreEqual(StripWarnings.None, metrics[i].Warnings & (StripWarnings.FlippedQuads | StripWarnings.WidthTooLarge | StripWarnings.SingularVertices));
+                worstTheta = Math.Max(worstTheta, metrics[i].MaxDiffThetaDegrees);
+                sumPlanar += metrics[i].EPlanar;
+            }
+            Assert.AreEqual(worstTheta, pattern.MaxDiffThetaDegrees);
+            Assert.AreEqual(sumPlanar, pattern.EPlanar, 1e-12 * (1 + sumPlanar));
+            Assert.LessOrEqual(pattern.MaxDiffThetaDegrees, 1.5);
+            Assert.LessOrEqual(pattern.MaxEStraight, 1e-3);
+            Assert.Less(pattern.MaxPlanar, 1e-4);
+            // Appro is in % of the bounding-box diagonal: the centre points are projected onto the mesh, so they
+            // stay within 5e-3 length units of it (under 1 % of an edge).
+            Assert.Less(pattern.ApproPercent / 100 * BoxDiagonal(cylinder.Xyz), 5e-3);
+        }
+
+        [Test]
+        public void SavedSessionRestoresBitForBit()
+        {
+            byte[] bytes = field.Save();
+            Assert.AreEqual((byte)'L', bytes[0]);
+            Assert.AreEqual((byte)'F', bytes[3]);
+            using (var restored = FieldSolver.Load(bytes))
+            {
+                CollectionAssert.AreEqual(bytes, restored.Save());
+                AssertBitwiseEqual(field.Values(), restored.Values());
+                Assert.AreEqual(field.Report.Iterations, restored.Report.Iterations);
+            }
+        }
+
+        [Test]
+        public void RestoredSessionContinuesAsTheOriginal()
+        {
+            using (var mesh = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            using (var original = new FieldSolver(mesh, cylinder.InitialField, FieldParams.Default(Family.PseudoGeodesic, Theta)))
+            {
+                original.Step(3);
+                using (var copy = FieldSolver.Load(original.Save()))
+                {
+                    FieldReport a = original.Step(4), b = copy.Step(4);
+                    Assert.AreEqual(7UL, a.Iterations);
+                    Assert.AreEqual(BitConverter.DoubleToInt64Bits(a.EnergyTotal), BitConverter.DoubleToInt64Bits(b.EnergyTotal));
+                    AssertBitwiseEqual(original.Values(), copy.Values());
+                    CollectionAssert.AreEqual(original.Save(), copy.Save());
+                }
+            }
+        }
+
+        [Test]
+        public void MeshRoundTripsThroughTheLibrary()
+        {
+            using (var mesh = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            {
+                Assert.AreEqual(cylinder.VertexCount, mesh.VertexCount);
+                Assert.AreEqual(cylinder.Triangles.Length / 3, mesh.TriangleCount);
+                AssertBitwiseEqual(cylinder.Xyz, mesh.Positions());
+                CollectionAssert.AreEqual(cylinder.Triangles, mesh.Triangles());
+            }
+        }
+
+        /// <summary>The length of strip <paramref name="i"/>'s centre line, summed from its points.</summary>
+        private double CentreLength(int i)
+        {
+            int[] points = strips.PointOffsets();
+            double[] centres = strips.Centres();
+            double length = 0;
+            for (int p = points[i]; p + 1 < points[i + 1]; p++) length += Vec.Distance(Vec.At(centres, p), Vec.At(centres, p + 1));
+            return length;
+        }
+
+        private static double BoxDiagonal(double[] xyz)
+        {
+            double sum = 0;
+            for (int k = 0; k < 3; k++)
+            {
+                double lo = double.PositiveInfinity, hi = double.NegativeInfinity;
+                for (int i = k; i < xyz.Length; i += 3) { lo = Math.Min(lo, xyz[i]); hi = Math.Max(hi, xyz[i]); }
+                sum += (hi - lo) * (hi - lo);
+            }
+            return Math.Sqrt(sum);
+        }
+
+        private static void AssertBitwiseEqual(double[] expected, double[] actual)
+        {
+            Assert.AreEqual(expected.Length, actual.Length);
+            for (int i = 0; i < expected.Length; i++)
+            {
+                if (BitConverter.DoubleToInt64Bits(expected[i]) != BitConverter.DoubleToInt64Bits(actual[i]))
+                {
+                    Assert.Fail("value " + i + " differs: " + expected[i].ToString("R") + " vs " + actual[i].ToString("R"));
+                }
+            }
+        }
+
+        /// <summary>|det(b − a, c − a, d − a)| / (|b − a| |c − a| |d − a|): 0 exactly when the four corners are coplanar.</summary>
+        private static double NonPlanarity(double[] a, double[] b, double[] c, double[] d)
+        {
+            double[] u = Vec.Sub(b, a), v = Vec.Sub(c, a), w = Vec.Sub(d, a);
+            return Math.Abs(Vec.Dot(u, Vec.Cross(v, w))) / (Vec.Norm(u) * Vec.Norm(v) * Vec.Norm(w));
+        }
+
+        /// <summary>
+        /// The signed angle in degrees between the discrete binormal of the polyline prev–p–next (paper Eq. 1) and the
+        /// cylinder's analytic normal at p, the sign of b·(n × t) telling the two mirror families apart.
+        /// </summary>
+        private static double BinormalAngle(double[] prev, double[] p, double[] next)
+        {
+            double[] e0 = Vec.Sub(p, prev), e1 = Vec.Sub(next, p), b = Vec.Cross(e0, e1);
+            double[] t = { e0[0] / Vec.Norm(e0) + e1[0] / Vec.Norm(e1), e0[1] / Vec.Norm(e0) + e1[1] / Vec.Norm(e1), e0[2] / Vec.Norm(e0) + e1[2] / Vec.Norm(e1) };
+            double r = Math.Sqrt(p[0] * p[0] + p[1] * p[1]);
+            double[] n = { p[0] / r, p[1] / r, 0 };
+            double bn = Vec.Dot(b, n) / Vec.Norm(b);
+            return Vec.Degrees(Vec.Dot(b, Vec.Cross(n, t)) < 0 ? -bn : bn);
+        }
+    }
+}

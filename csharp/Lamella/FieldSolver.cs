@@ -1,0 +1,98 @@
+using System;
+using Lamella.Interop;
+
+namespace Lamella
+{
+    /// <summary>
+    /// A field optimisation session (<c>LmlField</c>): a scalar field on a copy of the mesh whose level curves
+    /// should form the family of its <see cref="FieldParams"/>, stepped until converged, saved and restored.
+    /// Use from one thread at a time.
+    /// </summary>
+    public sealed class FieldSolver : IDisposable
+    {
+        internal readonly FieldHandle Handle;
+
+        private FieldSolver(FieldHandle handle)
+        {
+            Handle = handle;
+        }
+
+        /// <summary>
+        /// Starts an optimisation from <paramref name="initialField"/> (one value per vertex, not constant, e.g. a
+        /// height function roughly across the wanted curves). The session copies the mesh, which may be disposed afterwards.
+        /// </summary>
+        public FieldSolver(LamellaMesh mesh, double[] initialField, FieldParams parameters)
+        {
+            if (mesh == null) throw new ArgumentNullException(nameof(mesh));
+            if (initialField == null) throw new ArgumentNullException(nameof(initialField));
+            Native.Check(NativeMethods.lml_field_new(mesh.Handle, initialField, Native.Size(initialField.Length), ref parameters, out Handle));
+        }
+
+        /// <summary>Restores a session from bytes written by <see cref="Save"/>; it continues bit for bit as the original would.</summary>
+        public static FieldSolver Load(byte[] bytes)
+        {
+            if (bytes == null) throw new ArgumentNullException(nameof(bytes));
+            FieldHandle handle;
+            Native.Check(NativeMethods.lml_field_load(bytes, Native.Size(bytes.Length), out handle));
+            return new FieldSolver(handle);
+        }
+
+        /// <summary>
+        /// Runs at most <paramref name="maxIterations"/> iterations and returns the state; <see cref="FieldReport.IsConverged"/>
+        /// says whether to step again. A numerical failure throws (<see cref="Status.DidNotConverge"/>; the field keeps its last good state).
+        /// </summary>
+        public FieldReport Step(int maxIterations)
+        {
+            if (maxIterations < 0) throw new ArgumentOutOfRangeException(nameof(maxIterations));
+            FieldReport report;
+            Native.Check(NativeMethods.lml_field_step(Handle, (uint)maxIterations, out report));
+            return report;
+        }
+
+        /// <summary>Runs until convergence, at most <paramref name="maxIterations"/> iterations; throws <see cref="Status.DidNotConverge"/> when the budget runs out.</summary>
+        public FieldReport Solve(int maxIterations)
+        {
+            if (maxIterations < 0) throw new ArgumentOutOfRangeException(nameof(maxIterations));
+            FieldReport report;
+            Native.Check(NativeMethods.lml_field_solve(Handle, (uint)maxIterations, out report));
+            return report;
+        }
+
+        /// <summary>The state after the last step (or after creation / loading).</summary>
+        public FieldReport Report
+        {
+            get
+            {
+                FieldReport report;
+                Native.Check(NativeMethods.lml_field_report(Handle, out report));
+                return report;
+            }
+        }
+
+        /// <summary>Replaces the remaining weight schedule by constant weights (paper Eq. 12); a converged session runs again.</summary>
+        public void SetWeights(Weights weights) => Native.Check(NativeMethods.lml_field_set_weights(Handle, weights));
+
+        /// <summary>The current field, one value per vertex.</summary>
+        public double[] Values() =>
+            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_values(Handle, b, c, out n));
+
+        /// <summary>The unit binormal of the level curve at each vertex (x, y, z; zero at boundary and singular vertices).</summary>
+        public double[] Binormals() =>
+            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_binormals(Handle, b, c, out n));
+
+        /// <summary>The unit side vector of the Darboux frame (paper Eq. 10) at each vertex (x, y, z).</summary>
+        public double[] SideVectors() =>
+            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_side_vectors(Handle, b, c, out n));
+
+        /// <summary>The singular vertices of the last report.</summary>
+        public int[] SingularVertices() =>
+            Array.ConvertAll(Native.Read((uint[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_singular_vertices(Handle, b, c, out n)), i => checked((int)i));
+
+        /// <summary>The whole session as portable bytes (for <see cref="Load"/>).</summary>
+        public byte[] Save() =>
+            Native.Read((byte[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_save(Handle, b, c, out n));
+
+        /// <summary>Releases the native session (harmless to call twice).</summary>
+        public void Dispose() => Handle.Dispose();
+    }
+}

@@ -1,0 +1,38 @@
+using System;
+using Microsoft.Win32.SafeHandles;
+
+namespace Lamella.Interop
+{
+    /// <summary>
+    /// An owned native handle. <c>Dispose</c> or, failing that, the finalizer releases it exactly once
+    /// (SafeHandle guarantees both). A new handle type is one subclass naming its <c>_free</c> function.
+    /// </summary>
+    internal abstract class LamellaHandle : SafeHandleZeroOrMinusOneIsInvalid
+    {
+        protected LamellaHandle() : base(true) { }
+    }
+
+    internal sealed class MeshHandle : LamellaHandle
+    {
+        public MeshHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_mesh_free(handle); return true; }
+    }
+
+    internal sealed class FieldHandle : LamellaHandle
+    {
+        public FieldHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_field_free(handle); return true; }
+    }
+
+    internal sealed class CurvesHandle : LamellaHandle
+    {
+        public CurvesHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_curves_free(handle); return true; }
+    }
+
+    internal sealed class StripsHandle : LamellaHandle
+    {
+        public StripsHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_strips_free(handle); return true; }
+    }
+}

@@ -1,0 +1,114 @@
+using System;
+using System.Runtime.InteropServices;
+
+namespace Lamella.Interop
+{
+    /// <summary>
+    /// The C ABI of include/lamella.h, one declaration per header function, in the header's order
+    /// (a test parses the header and compares names, parameter counts and pointer/value kinds).
+    /// Conventions: <c>size_t</c> is <see cref="UIntPtr"/>; input arrays are plain arrays (pinned by the
+    /// marshaller), output arrays <c>[Out]</c>; handles are <see cref="LamellaHandle"/> subclasses, except in
+    /// the <c>_free</c> functions that their <c>ReleaseHandle</c> calls with the raw pointer; strings the
+    /// library owns come back as <see cref="IntPtr"/> (never freed by the marshaller).
+    /// </summary>
+    internal static class NativeMethods
+    {
+        /// <summary>The library name: lamella.dll, liblamella.so, liblamella.dylib (see <see cref="NativeLibraryLoader"/>).</summary>
+        public const string Library = "lamella";
+        private const CallingConvention Cdecl = CallingConvention.Cdecl;
+
+        // Versions, status names, errors, test hooks.
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern uint lml_abi_version();
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern IntPtr lml_version();
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern IntPtr lml_status_name(int status);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern IntPtr lml_last_error_message();
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_debug_trigger_panic();
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern UIntPtr lml_debug_live_handles();
+
+        // LmlMesh.
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_mesh_new(double[] xyz, UIntPtr vertexCount, uint[] triangles, UIntPtr triangleCount, out MeshHandle mesh);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_mesh_read_obj(byte[] utf8Path, out MeshHandle mesh);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_mesh_free(IntPtr mesh);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_mesh_vertex_count(MeshHandle mesh, out UIntPtr count);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_mesh_triangle_count(MeshHandle mesh, out UIntPtr count);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_mesh_positions(MeshHandle mesh, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_mesh_triangles(MeshHandle mesh, [Out] uint[] buffer, UIntPtr capacity, out UIntPtr needed);
+
+        // LmlField.
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_field_params_default(uint family, double thetaDegrees, out FieldParams parameters);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_field_new(MeshHandle mesh, double[] initialField, UIntPtr n, [In] ref FieldParams parameters, out FieldHandle field);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_field_free(IntPtr field);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_field_step(FieldHandle field, uint maxIterations, out FieldReport report);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_field_solve(FieldHandle field, uint maxIterations, out FieldReport report);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_field_report(FieldHandle field, out FieldReport report);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_field_set_weights(FieldHandle field, Weights weights);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_field_values(FieldHandle field, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_field_binormals(FieldHandle field, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_field_side_vectors(FieldHandle field, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_field_singular_vertices(FieldHandle field, [Out] uint[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_field_save(FieldHandle field, [Out] byte[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_field_load(byte[] bytes, UIntPtr length, out FieldHandle field);
+
+        // LmlCurves.
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_curves_new(FieldHandle field, double[] levels, UIntPtr levelCount, double spacing, out CurvesHandle curves);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_curves_new_uniform(FieldHandle field, UIntPtr count, double spacing, out CurvesHandle curves);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_curves_free(IntPtr curves);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_curves_count(CurvesHandle curves, out UIntPtr count);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_curves_offsets(CurvesHandle curves, [Out] UIntPtr[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_curves_points(CurvesHandle curves, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_curves_normals(CurvesHandle curves, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_curves_levels(CurvesHandle curves, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_curves_closed(CurvesHandle curves, [Out] byte[] buffer, UIntPtr capacity, out UIntPtr needed);
+
+        // LmlStrips.
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_params_default(double thetaDegrees, double width, out StripParams parameters);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_new(CurvesHandle curves, [In] ref StripParams parameters, out StripsHandle strips);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_strips_free(IntPtr strips);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_strips_count(StripsHandle strips, out UIntPtr count);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_point_offsets(StripsHandle strips, [Out] UIntPtr[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_vertex_offsets(StripsHandle strips, [Out] UIntPtr[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_quad_offsets(StripsHandle strips, [Out] UIntPtr[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_vertices(StripsHandle strips, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_quads(StripsHandle strips, [Out] uint[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_centres(StripsHandle strips, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_rulings(StripsHandle strips, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_unrolled_vertices(StripsHandle strips, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_unrolled_centres(StripsHandle strips, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_metrics(StripsHandle strips, [Out] StripMetrics[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_pattern_metrics(StripsHandle strips, out PatternMetrics metrics);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_skipped(StripsHandle strips, [Out] SkippedCurve[] buffer, UIntPtr capacity, out UIntPtr needed);
+    }
+}

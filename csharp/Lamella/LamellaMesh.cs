@@ -1,0 +1,79 @@
+using System;
+using Lamella.Interop;
+
+namespace Lamella
+{
+    /// <summary>A validated triangle mesh, a topological disk possibly with holes (<c>LmlMesh</c>). Immutable.</summary>
+    public sealed class LamellaMesh : IDisposable
+    {
+        internal readonly MeshHandle Handle;
+
+        private LamellaMesh(MeshHandle handle)
+        {
+            Handle = handle;
+        }
+
+        /// <summary>
+        /// Creates a mesh from flat arrays: <paramref name="xyz"/> holds x, y, z per vertex, <paramref name="triangles"/>
+        /// three zero-based vertex indices per triangle, consistently oriented.
+        /// </summary>
+        public static LamellaMesh FromArrays(double[] xyz, int[] triangles)
+        {
+            if (xyz == null) throw new ArgumentNullException(nameof(xyz));
+            if (triangles == null) throw new ArgumentNullException(nameof(triangles));
+            if (xyz.Length % 3 != 0) throw new ArgumentException("xyz holds " + xyz.Length + " values, not a multiple of 3", nameof(xyz));
+            if (triangles.Length % 3 != 0) throw new ArgumentException("triangles holds " + triangles.Length + " indices, not a multiple of 3", nameof(triangles));
+            var indices = new uint[triangles.Length];
+            for (int i = 0; i < triangles.Length; i++)
+            {
+                if (triangles[i] < 0) throw new ArgumentOutOfRangeException(nameof(triangles), "triangle " + i / 3 + " corner " + i % 3 + " is negative (" + triangles[i] + ")");
+                indices[i] = (uint)triangles[i];
+            }
+            MeshHandle handle;
+            Native.Check(NativeMethods.lml_mesh_new(xyz, Native.Size(xyz.Length / 3), indices, Native.Size(triangles.Length / 3), out handle));
+            return new LamellaMesh(handle);
+        }
+
+        /// <summary>Reads and validates a Wavefront OBJ file (polygons are fanned into triangles).</summary>
+        public static LamellaMesh ReadObj(string path)
+        {
+            if (path == null) throw new ArgumentNullException(nameof(path));
+            MeshHandle handle;
+            Native.Check(NativeMethods.lml_mesh_read_obj(Utf8.ToNative(path), out handle));
+            return new LamellaMesh(handle);
+        }
+
+        /// <summary>The number of vertices.</summary>
+        public int VertexCount
+        {
+            get
+            {
+                UIntPtr count;
+                Native.Check(NativeMethods.lml_mesh_vertex_count(Handle, out count));
+                return Native.Count(count);
+            }
+        }
+
+        /// <summary>The number of triangles.</summary>
+        public int TriangleCount
+        {
+            get
+            {
+                UIntPtr count;
+                Native.Check(NativeMethods.lml_mesh_triangle_count(Handle, out count));
+                return Native.Count(count);
+            }
+        }
+
+        /// <summary>The vertex positions, x, y, z per vertex.</summary>
+        public double[] Positions() =>
+            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_mesh_positions(Handle, b, c, out n));
+
+        /// <summary>The triangles, three vertex indices each.</summary>
+        public int[] Triangles() =>
+            Array.ConvertAll(Native.Read((uint[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_mesh_triangles(Handle, b, c, out n)), i => checked((int)i));
+
+        /// <summary>Releases the native mesh (harmless to call twice).</summary>
+        public void Dispose() => Handle.Dispose();
+    }
+}

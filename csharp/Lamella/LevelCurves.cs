@@ -1,0 +1,76 @@
+using System;
+using Lamella.Interop;
+
+namespace Lamella
+{
+    /// <summary>
+    /// Level polylines of a field (<c>LmlCurves</c>) with their levels, normals and closed flags. Immutable; they
+    /// keep their own copy of the surface, so the field may be stepped on or disposed.
+    /// </summary>
+    public sealed class LevelCurves : IDisposable
+    {
+        internal readonly CurvesHandle Handle;
+
+        private LevelCurves(CurvesHandle handle)
+        {
+            Handle = handle;
+        }
+
+        /// <summary>
+        /// The level curves at <paramref name="levels"/> (inside the field's range). <paramref name="spacing"/> 0 keeps one
+        /// point per crossed mesh edge; > 0 resamples at about that arc length (the strips' quad length).
+        /// </summary>
+        public static LevelCurves AtLevels(FieldSolver field, double[] levels, double spacing)
+        {
+            if (field == null) throw new ArgumentNullException(nameof(field));
+            if (levels == null) throw new ArgumentNullException(nameof(levels));
+            CurvesHandle handle;
+            Native.Check(NativeMethods.lml_curves_new(field.Handle, levels, Native.Size(levels.Length), spacing, out handle));
+            return new LevelCurves(handle);
+        }
+
+        /// <summary>The level curves at <paramref name="count"/> values spread uniformly over the field's range, extremes left out.</summary>
+        public static LevelCurves Uniform(FieldSolver field, int count, double spacing)
+        {
+            if (field == null) throw new ArgumentNullException(nameof(field));
+            if (count < 0) throw new ArgumentOutOfRangeException(nameof(count));
+            CurvesHandle handle;
+            Native.Check(NativeMethods.lml_curves_new_uniform(field.Handle, Native.Size(count), spacing, out handle));
+            return new LevelCurves(handle);
+        }
+
+        /// <summary>The number of polylines.</summary>
+        public int Count
+        {
+            get
+            {
+                UIntPtr count;
+                Native.Check(NativeMethods.lml_curves_count(Handle, out count));
+                return Native.Count(count);
+            }
+        }
+
+        /// <summary>The offset table (Count + 1 values from 0): polyline i has points Offsets[i] .. Offsets[i + 1].</summary>
+        public int[] Offsets() =>
+            Native.Offsets(Native.Read((UIntPtr[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_curves_offsets(Handle, b, c, out n)));
+
+        /// <summary>The points of all polylines, x, y, z each; a closed polyline does not repeat its first point.</summary>
+        public double[] Points() =>
+            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_curves_points(Handle, b, c, out n));
+
+        /// <summary>The unit surface normal at each point.</summary>
+        public double[] Normals() =>
+            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_curves_normals(Handle, b, c, out n));
+
+        /// <summary>The level value of each polyline.</summary>
+        public double[] Levels() =>
+            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_curves_levels(Handle, b, c, out n));
+
+        /// <summary>Whether each polyline closes on itself.</summary>
+        public bool[] Closed() =>
+            Array.ConvertAll(Native.Read((byte[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_curves_closed(Handle, b, c, out n)), f => f != 0);
+
+        /// <summary>Releases the native curves (harmless to call twice).</summary>
+        public void Dispose() => Handle.Dispose();
+    }
+}

@@ -1,0 +1,29 @@
+namespace Lamella
+{
+    /// <summary>The result of a native call (<c>LmlStatus</c> in lamella.h): 0 and above is success, negative a failure.</summary>
+    public enum Status
+    {
+        /// <summary>Success.</summary>
+        Ok = 0,
+        /// <summary>A field step used its iteration budget before convergence: step again.</summary>
+        More = 1,
+        /// <summary>The field optimisation has converged.</summary>
+        Converged = 2,
+        /// <summary>A NULL pointer, a wrong array length, a non-finite or out-of-range parameter, an unreadable file.</summary>
+        InvalidArgument = -1,
+        /// <summary>The triangles or coordinates do not form a valid mesh.</summary>
+        InvalidMesh = -2,
+        /// <summary>The mesh is valid but not a single topological disk (possibly with holes).</summary>
+        NotADisk = -3,
+        /// <summary>The scalar field has no usable level curves.</summary>
+        SingularField = -4,
+        /// <summary>The optimisation did not converge (budget used up, or a numerical failure).</summary>
+        DidNotConverge = -5,
+        /// <summary>A caller-owned output buffer is too small (the binding sizes its buffers, so this means a bug).</summary>
+        BufferTooSmall = -6,
+        /// <summary>Saved session bytes are truncated, corrupted or from another format version.</summary>
+        CorruptData = -7,
+        /// <summary>A bug inside the native library (a caught panic).</summary>
+        InternalError = -8,
+    }
+}

@@ -1,0 +1,98 @@
+using System;
+using Lamella.Interop;
+
+namespace Lamella
+{
+    /// <summary>
+    /// Rectifying developable strips along level curves (<c>LmlStrips</c>): planar quads, centre lines, rulings,
+    /// flat unrollings and the Table 4 metrics. Strip i with n centre points has 2n vertices (left boundary, then
+    /// right) and n − 1 quads; three offset tables cut the flat arrays per strip. Immutable.
+    /// </summary>
+    public sealed class Strips : IDisposable
+    {
+        internal readonly StripsHandle Handle;
+
+        private Strips(StripsHandle handle)
+        {
+            Handle = handle;
+        }
+
+        /// <summary>Builds a rectifying strip on every polyline of <paramref name="curves"/>; polylines that cannot carry one are listed by <see cref="Skipped"/>.</summary>
+        public static Strips Build(LevelCurves curves, StripParams parameters)
+        {
+            if (curves == null) throw new ArgumentNullException(nameof(curves));
+            StripsHandle handle;
+            Native.Check(NativeMethods.lml_strips_new(curves.Handle, ref parameters, out handle));
+            return new Strips(handle);
+        }
+
+        /// <summary>The number of strips.</summary>
+        public int Count
+        {
+            get
+            {
+                UIntPtr count;
+                Native.Check(NativeMethods.lml_strips_count(Handle, out count));
+                return Native.Count(count);
+            }
+        }
+
+        /// <summary>Offsets (in points) of the centres, rulings and unrolled centres per strip.</summary>
+        public int[] PointOffsets() =>
+            Native.Offsets(Native.Read((UIntPtr[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_point_offsets(Handle, b, c, out n)));
+
+        /// <summary>Offsets of the vertices (2n per strip) of <see cref="Vertices"/> and <see cref="UnrolledVertices"/>.</summary>
+        public int[] VertexOffsets() =>
+            Native.Offsets(Native.Read((UIntPtr[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_vertex_offsets(Handle, b, c, out n)));
+
+        /// <summary>Offsets of the quads (n − 1 per strip) of <see cref="Quads"/>.</summary>
+        public int[] QuadOffsets() =>
+            Native.Offsets(Native.Read((UIntPtr[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_quad_offsets(Handle, b, c, out n)));
+
+        /// <summary>The strip vertices in space, x, y, z each.</summary>
+        public double[] Vertices() =>
+            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_vertices(Handle, b, c, out n));
+
+        /// <summary>The quads, four indices each into the whole vertex array (spatial and unrolled alike).</summary>
+        public int[] Quads() =>
+            Array.ConvertAll(Native.Read((uint[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_quads(Handle, b, c, out n)), i => checked((int)i));
+
+        /// <summary>The centre lines, x, y, z per point.</summary>
+        public double[] Centres() =>
+            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_centres(Handle, b, c, out n));
+
+        /// <summary>The unit rulings at the centre points, x, y, z each.</summary>
+        public double[] Rulings() =>
+            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_rulings(Handle, b, c, out n));
+
+        /// <summary>The strips laid flat: x, y of each vertex of <see cref="Vertices"/>; each strip starts at the origin along +x.</summary>
+        public double[] UnrolledVertices() =>
+            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_unrolled_vertices(Handle, b, c, out n));
+
+        /// <summary>The unrolled centre lines: x, y of each point of <see cref="Centres"/>.</summary>
+        public double[] UnrolledCentres() =>
+            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_unrolled_centres(Handle, b, c, out n));
+
+        /// <summary>The Table 4 measures of each strip.</summary>
+        public StripMetrics[] Metrics() =>
+            Native.Read((StripMetrics[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_metrics(Handle, b, c, out n));
+
+        /// <summary>The Table 4 measures of the whole pattern.</summary>
+        public PatternMetrics PatternMetrics
+        {
+            get
+            {
+                PatternMetrics metrics;
+                Native.Check(NativeMethods.lml_strips_pattern_metrics(Handle, out metrics));
+                return metrics;
+            }
+        }
+
+        /// <summary>The curves no strip could be built on, and why.</summary>
+        public SkippedCurve[] Skipped() =>
+            Native.Read((SkippedCurve[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_skipped(Handle, b, c, out n));
+
+        /// <summary>Releases the native strips (harmless to call twice).</summary>
+        public void Dispose() => Handle.Dispose();
+    }
+}

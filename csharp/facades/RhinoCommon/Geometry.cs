@@ -1,0 +1,86 @@
+// COMPILE-TIME FACADE of RhinoCommon (never shipped): only the members Lamella.Grasshopper uses,
+// with the real namespaces and signatures; every body throws.
+using System;
+using System.Collections.Generic;
+using Rhino.Geometry.Collections;
+
+namespace Rhino.Geometry
+{
+    public struct Point3d
+    {
+        public Point3d(double x, double y, double z) { throw new NotSupportedException("facade"); }
+        public double X { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        public double Y { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        public double Z { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+    }
+
+    public struct Vector3d
+    {
+        public Vector3d(double x, double y, double z) { throw new NotSupportedException("facade"); }
+        public double X { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        public double Y { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        public double Z { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+    }
+
+    public struct Line
+    {
+        public Line(Point3d from, Point3d to) { throw new NotSupportedException("facade"); }
+    }
+
+    public struct MeshFace
+    {
+        public int A { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        public int B { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        public int C { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        public int D { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+    }
+
+    public class GeometryBase
+    {
+        internal GeometryBase() { throw new NotSupportedException("facade"); }
+    }
+
+    public class Mesh : GeometryBase
+    {
+        public Mesh() { throw new NotSupportedException("facade"); }
+        public MeshVertexList Vertices { get { throw new NotSupportedException("facade"); } }
+        public MeshFaceList Faces { get { throw new NotSupportedException("facade"); } }
+        public MeshVertexNormalList Normals { get { throw new NotSupportedException("facade"); } }
+        public bool Compact() { throw new NotSupportedException("facade"); }
+    }
+
+    public class Curve : GeometryBase
+    {
+        internal Curve() { throw new NotSupportedException("facade"); }
+    }
+
+    public class PolylineCurve : Curve
+    {
+        public PolylineCurve(IEnumerable<Point3d> points) { throw new NotSupportedException("facade"); }
+    }
+}
+
+namespace Rhino.Geometry.Collections
+{
+    public class MeshVertexList
+    {
+        internal MeshVertexList() { throw new NotSupportedException("facade"); }
+        public int Count { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        public int Add(double x, double y, double z) { throw new NotSupportedException("facade"); }
+        public Rhino.Geometry.Point3d[] ToPoint3dArray() { throw new NotSupportedException("facade"); }
+    }
+
+    public class MeshFaceList
+    {
+        internal MeshFaceList() { throw new NotSupportedException("facade"); }
+        public int Count { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        public Rhino.Geometry.MeshFace this[int index] { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        public int AddFace(int vertex1, int vertex2, int vertex3, int vertex4) { throw new NotSupportedException("facade"); }
+    }
+
+    public class MeshVertexNormalList
+    {
+        internal MeshVertexNormalList() { throw new NotSupportedException("facade"); }
+        public bool ComputeNormals() { throw new NotSupportedException("facade"); }
+    }
+}

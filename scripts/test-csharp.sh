@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Checks the C# layer (csharp/) on Linux under Mono: builds the Rust library, the binding
+# (csharp/Lamella), its NUnit tests (csharp/Lamella.Tests) and the Grasshopper plugin
+# (csharp/Lamella.Grasshopper, compiled against the compile-only facades of csharp/facades), all with
+# `mcs -sdk:4.8-api -warnaserror+`, then runs the tests against the real library. Everything is built
+# under target/csharp/. The last line is "N passed, N failed"; the exit status is non-zero on any failure.
+# Needs cargo and python3; installs mono-devel and NUnit 2.6 with apt-get (as root) when missing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+target="${CARGO_TARGET_DIR:-target}"
+build="$target/csharp"
+facades="$build/facades"
+
+missing=()
+# mono-devel brings mcs and the .NET Framework 4.8 reference assemblies (mcs alone comes from mono-mcs).
+{ command -v mcs >/dev/null && [ -f /usr/lib/mono/4.8-api/mscorlib.dll ]; } || missing+=(mono-devel)
+command -v nunit-console >/dev/null || missing+=(nunit-console)
+[ -f /usr/lib/pkgconfig/nunit.pc ] || missing+=(libnunit-cil-dev)
+if ((${#missing[@]})); then
+    echo "== C#: installing ${missing[*]}"
+    apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+
+echo "== C#: native library"
+cargo build --locked --lib
+
+mkdir -p "$build" "$facades"
+mcs=(mcs -sdk:4.8-api -langversion:7.2 -warnaserror+ -nologo -target:library)
+
+echo "== C#: binding"
+"${mcs[@]}" -out:"$build/Lamella.dll" -recurse:'csharp/Lamella/*.cs'
+
+echo "== C#: Grasshopper plugin against the compile-only facades"
+"${mcs[@]}" -out:"$facades/RhinoCommon.dll" -recurse:'csharp/facades/RhinoCommon/*.cs'
+"${mcs[@]}" -out:"$facades/GH_IO.dll" -recurse:'csharp/facades/GH_IO/*.cs'
+"${mcs[@]}" -r:System.Drawing.dll -r:"$facades/RhinoCommon.dll" -r:"$facades/GH_IO.dll" \
+    -out:"$facades/Grasshopper.dll" -recurse:'csharp/facades/Grasshopper/*.cs'
+icons=()
+for icon in csharp/Lamella.Grasshopper/Icons/*.png; do
+    icons+=("-resource:$icon,Lamella.Grasshopper.Icons.$(basename "$icon")")
+done
+# The facades stay in their own folder: nothing but this compile step ever sees them.
+"${mcs[@]}" -r:System.Drawing.dll -r:"$facades/RhinoCommon.dll" -r:"$facades/GH_IO.dll" -r:"$facades/Grasshopper.dll" \
+    -r:"$build/Lamella.dll" "${icons[@]}" -out:"$build/Lamella.Grasshopper.gha" -recurse:'csharp/Lamella.Grasshopper/*.cs'
+
+echo "== C#: tests"
+"${mcs[@]}" -pkg:nunit -r:"$build/Lamella.dll" -out:"$build/Lamella.Tests.dll" -recurse:'csharp/Lamella.Tests/*.cs'
+cp "$target/debug/liblamella.so" "$build/"
+rm -f "$build/TestResult.xml"
+status=0
+# The panic test makes the library print a panic message on stderr; that is expected.
+(cd "$build" && RUST_BACKTRACE=0 LAMELLA_HEADER="$PWD/../../include/lamella.h" \
+    nunit-console -nologo -labels -xml=TestResult.xml Lamella.Tests.dll) || status=$?
+python3 - "$build/TestResult.xml" "$status" <<'PY'
+import sys
+import xml.etree.ElementTree as ET
+
+path, status = sys.argv[1], int(sys.argv[2])
+try:
+    cases = list(ET.parse(path).getroot().iter("test-case"))
+except (OSError, ET.ParseError) as error:
+    print(f"no test results ({error})")
+    print("0 passed, 1 failed")
+    sys.exit(1)
+ran = [c for c in cases if c.get("executed") == "True"]
+passed = sum(1 for c in ran if c.get("success") == "True")
+failed = len(ran) - passed + len(cases) - len(ran)  # a test that did not run counts as failed
+for c in cases:
+    if c.get("success") != "True":
+        print("FAILED:", c.get("name"))
+print(f"{passed} passed, {failed} failed")
+sys.exit(1 if failed or status or not cases else 0)
+PY
