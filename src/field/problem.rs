@@ -31,7 +31,9 @@ pub struct FieldProblem {
     mesh: TriMesh,
     fairness: HessianEnergy,
     family: Family,
-    target: TargetAngle,
+    /// Target angle of each interior vertex (index `k` as in `interior`): the family's θ at
+    /// every vertex unless a varying-angle profile has set its own per vertex.
+    targets: Vec<TargetAngle>,
     weights: Weights,
     gradient_target: f64,
     /// Interior vertices, in increasing order: the owners of curve blocks.
@@ -59,7 +61,7 @@ impl FieldProblem {
         }
         FieldProblem {
             fairness,
-            target: TargetAngle::from_degrees(family.theta_degrees()),
+            targets: vec![TargetAngle::from_degrees(family.theta_degrees()); interior.len()],
             family,
             weights,
             gradient_target,
@@ -101,6 +103,18 @@ impl FieldProblem {
     /// Target `‖∇F‖` of `E_grad` on this problem's scale.
     pub(crate) fn gradient_target(&self) -> f64 {
         self.gradient_target
+    }
+
+    /// Target angle in degrees of the `k`-th interior vertex.
+    pub(crate) fn target_degrees(&self, k: usize) -> f64 {
+        self.targets[k].degrees
+    }
+
+    /// Gives each interior vertex its own target angle (degrees, one per entry of `interior`,
+    /// already validated). Only meaningful for pseudo-geodesics.
+    pub(crate) fn set_target_angles(&mut self, degrees: &[f64]) {
+        debug_assert_eq!(degrees.len(), self.interior.len());
+        self.targets = degrees.iter().map(|&theta| TargetAngle::from_degrees(theta)).collect();
     }
 
     pub fn set_weights(&mut self, weights: Weights) {
@@ -157,7 +171,7 @@ impl FieldProblem {
                         let start = self.auxiliary_start(k);
                         let aux = &x[start..start + pseudo_geodesic::AUXILIARIES];
                         let aux_column = 1 + self.mesh.star(v).neighbours.len();
-                        pseudo_geodesic::evaluate(&self.mesh, x, v, aux, self.target, scale, residuals, jacobian, aux_column);
+                        pseudo_geodesic::evaluate(&self.mesh, x, v, aux, self.targets[k], scale, residuals, jacobian, aux_column);
                     }
                     Family::Geodesic => geodesic::evaluate(&self.mesh, x, v, scale, residuals, jacobian),
                     Family::Asymptotic => asymptotic::evaluate(&self.mesh, x, v, scale, residuals, jacobian),
