@@ -8,6 +8,7 @@
 //! vertex. A curve block declares the field values of the whole vertex star, so the sparsity
 //! pattern stays fixed while the crossed edges `p`, `q` move around the star.
 
+use super::angle_profile::ClampedProfile;
 use super::hessian_energy::HessianEnergy;
 use super::params::{Family, Weights};
 use super::pseudo_geodesic::TargetAngle;
@@ -31,9 +32,10 @@ pub struct FieldProblem {
     mesh: TriMesh,
     fairness: HessianEnergy,
     family: Family,
-    /// Target angle of each interior vertex (index `k` as in `interior`): the family's θ at
-    /// every vertex unless a varying-angle profile has set its own per vertex.
-    targets: Vec<TargetAngle>,
+    /// The family's target angle θ.
+    target: TargetAngle,
+    /// A varying-angle profile `θ(F)` (Fig. 16) that replaces `target` at every vertex.
+    profile: Option<ClampedProfile>,
     weights: Weights,
     gradient_target: f64,
     /// Interior vertices, in increasing order: the owners of curve blocks.
@@ -61,7 +63,8 @@ impl FieldProblem {
         }
         FieldProblem {
             fairness,
-            targets: vec![TargetAngle::from_degrees(family.theta_degrees()); interior.len()],
+            target: TargetAngle::from_degrees(family.theta_degrees()),
+            profile: None,
             family,
             weights,
             gradient_target,
@@ -105,16 +108,17 @@ impl FieldProblem {
         self.gradient_target
     }
 
-    /// Target angle in degrees of the `k`-th interior vertex.
-    pub(crate) fn target_degrees(&self, k: usize) -> f64 {
-        self.targets[k].degrees
+    /// Target angle of the `k`-th interior vertex for the variables `x`.
+    pub(crate) fn target(&self, k: usize, x: &[f64]) -> TargetAngle {
+        match &self.profile {
+            Some(profile) => profile.target_at(x[self.interior[k] as usize]),
+            None => self.target,
+        }
     }
 
-    /// Gives each interior vertex its own target angle (degrees, one per entry of `interior`,
-    /// already validated). Only meaningful for pseudo-geodesics.
-    pub(crate) fn set_target_angles(&mut self, degrees: &[f64]) {
-        debug_assert_eq!(degrees.len(), self.interior.len());
-        self.targets = degrees.iter().map(|&theta| TargetAngle::from_degrees(theta)).collect();
+    /// Makes the target of every vertex `θ(F_v)` (pseudo-geodesics only).
+    pub(crate) fn set_angle_profile(&mut self, profile: ClampedProfile) {
+        self.profile = Some(profile);
     }
 
     pub fn set_weights(&mut self, weights: Weights) {
@@ -171,7 +175,7 @@ impl FieldProblem {
                         let start = self.auxiliary_start(k);
                         let aux = &x[start..start + pseudo_geodesic::AUXILIARIES];
                         let aux_column = 1 + self.mesh.star(v).neighbours.len();
-                        pseudo_geodesic::evaluate(&self.mesh, x, v, aux, self.targets[k], scale, residuals, jacobian, aux_column);
+                        pseudo_geodesic::evaluate(&self.mesh, x, v, aux, self.target(k, x), scale, residuals, jacobian, aux_column);
                     }
                     Family::Geodesic => geodesic::evaluate(&self.mesh, x, v, scale, residuals, jacobian),
                     Family::Asymptotic => asymptotic::evaluate(&self.mesh, x, v, scale, residuals, jacobian),

@@ -22,8 +22,13 @@ use super::level_angles::{level_angles, LevelAngles};
 use super::params::{Family, VaryingAngleParams};
 use super::report::{measured_angles, StepReport};
 use crate::curves::CurveError;
-use crate::mesh::TriMesh;
+use crate::mesh::{TriMesh, Vec3};
 use serde::{Deserialize, Serialize};
+
+/// Arc-length step, in mean edge lengths, at which [`VaryingAngleSolver::level_angles`] measures:
+/// long enough that the discrete binormal spans several faces (the faceting of the mesh tilts
+/// shorter chords noticeably), short enough to follow the curve.
+pub const LEVEL_ANGLE_SPACING: f64 = 3.0;
 
 /// State of a varying-angle optimisation after a `step`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -34,7 +39,7 @@ pub struct VaryingAngleReport {
     pub fitted: AngleProfile,
     /// The target profile in force: `fitted` lowered (before per-vertex clamping).
     pub target: AngleProfile,
-    /// Smallest and largest per-vertex target in degrees, after clamping.
+    /// Smallest and largest per-vertex target `clamp(θ(F_v))` in degrees for the current field.
     pub target_range_degrees: [f64; 2],
     /// Profile updates (lowerings) made so far.
     pub updates: usize,
@@ -47,12 +52,14 @@ pub struct VaryingAngleReport {
 /// Optimises a field whose level sets are P-curves with an angle that varies from level to level
 /// (Fig. 16). Stepwise like [`FieldSolver`]: create it, `step` it, read the report, `freeze` the
 /// profile when the angles are low enough, step on until it converges.
+///
+/// Its per-vertex targets are not part of a [`FieldSolver`] session (`to_bytes`), which is why the
+/// underlying solver is not handed out.
 pub struct VaryingAngleSolver {
     solver: FieldSolver,
     params: VaryingAngleParams,
     fitted: AngleProfile,
     target: AngleProfile,
-    target_range_degrees: [f64; 2],
     updates: usize,
     /// Iterations since the last update of the profile.
     since_update: usize,
@@ -79,7 +86,6 @@ impl VaryingAngleSolver {
             params,
             fitted,
             target: fitted,
-            target_range_degrees: [0.0; 2],
             updates: 0,
             since_update: 0,
             frozen: false,
@@ -143,9 +149,24 @@ impl VaryingAngleSolver {
         self.solver.field()
     }
 
-    /// The underlying pseudo-geodesic optimisation (binormals, side vectors, mesh, iterations).
-    pub fn field_solver(&self) -> &FieldSolver {
-        &self.solver
+    /// Unit binormal per vertex (the auxiliary `b`), as [`FieldSolver::binormals`].
+    pub fn binormals(&self) -> Vec<Vec3> {
+        self.solver.binormals()
+    }
+
+    /// Unit side vector per vertex (the auxiliary `u`), as [`FieldSolver::side_vectors`].
+    pub fn side_vectors(&self) -> Vec<Vec3> {
+        self.solver.side_vectors()
+    }
+
+    /// The mesh in the caller's units, as [`FieldSolver::mesh`].
+    pub fn mesh(&self) -> TriMesh {
+        self.solver.mesh()
+    }
+
+    /// Iterations run since the solver was created.
+    pub fn iterations(&self) -> usize {
+        self.solver.iterations()
     }
 
     pub fn params(&self) -> &VaryingAngleParams {
@@ -153,11 +174,11 @@ impl VaryingAngleSolver {
     }
 
     /// The angles achieved along the level curves of the current field at `levels` (e.g. from
-    /// [`crate::curves::uniform_levels`]), measured every two mean edge lengths (see
-    /// [`level_angles`]).
+    /// [`crate::curves::uniform_levels`]), measured every [`LEVEL_ANGLE_SPACING`] mean edge
+    /// lengths (see [`level_angles`]).
     pub fn level_angles(&self, levels: &[f64]) -> Result<Vec<LevelAngles>, CurveError> {
         let mesh = self.solver.mesh();
-        let spacing = 2.0 * mesh.mean_edge_length();
+        let spacing = LEVEL_ANGLE_SPACING * mesh.mean_edge_length();
         level_angles(&mesh, &self.solver.field(), levels, spacing)
     }
 
@@ -174,16 +195,11 @@ impl VaryingAngleSolver {
         self.frozen = self.updates >= self.params.max_updates;
     }
 
-    /// Sets `θ_v = clamp(target(F_v))` at every interior vertex.
+    /// Makes the target of every interior vertex `θ_v = clamp(target(F_v))`, a function of the
+    /// vertex's current field value (so the rows of Eq. 8 also depend on `F_v`).
     fn apply_target(&mut self, target: AngleProfile) {
-        let field = self.solver.field();
-        let (lo, hi) = (self.params.min_degrees, self.params.max_degrees);
-        // A profile is finite where the field is; clamping also bounds the extrapolated cubic.
-        let degrees: Vec<f64> = self.solver.problem.interior().iter().map(|&v| target.evaluate(field[v as usize]).clamp(lo, hi)).collect();
-        let range = degrees.iter().fold([f64::INFINITY, f64::NEG_INFINITY], |[a, b], &d| [a.min(d), b.max(d)]);
-        self.target_range_degrees = if degrees.is_empty() { [lo, hi] } else { range };
         self.target = target;
-        self.solver.retarget(&degrees);
+        self.solver.retarget(target, self.params.min_degrees, self.params.max_degrees);
     }
 
     fn compose_report(&self, field: StepReport) -> VaryingAngleReport {
@@ -191,7 +207,7 @@ impl VaryingAngleSolver {
             field,
             fitted: self.fitted,
             target: self.target,
-            target_range_degrees: self.target_range_degrees,
+            target_range_degrees: self.solver.target_range_degrees().unwrap_or([self.params.min_degrees, self.params.max_degrees]),
             updates: self.updates,
             frozen: self.frozen,
             converged: self.is_converged(),
@@ -221,4 +237,34 @@ fn validate(params: &VaryingAngleParams) -> Result<(), FieldError> {
         return invalid("min_degrees/max_degrees", format!("need 0 ≤ min < max ≤ 180, got [{lo}, {hi}]"));
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solver::{check_block_jacobian, LeastSquaresProblem};
+    use crate::surfaces::{sphere_cap, SphereCap};
+
+    #[test]
+    fn rows_with_a_field_dependent_target_have_exact_jacobians() {
+        let cap = SphereCap { radius: 3.0, cap_angle: 0.6, target_vertices: 150, irregularity: 0.3, seed: 2 };
+        let mesh = sphere_cap(&cap).expect("valid cap").into_mesh().expect("valid mesh");
+        let field: Vec<f64> = mesh.positions().iter().map(|p| 0.8 * p.x + 0.5 * p.z + 0.1 * p.y * p.y).collect();
+        let params = VaryingAngleParams { update_interval: 1, ..VaryingAngleParams::new() };
+        let mut solver = VaryingAngleSolver::new(&mesh, &field, params).expect("valid input");
+        solver.step(3).expect("solver runs");
+        let problem = &solver.solver.problem;
+        let x = &solver.solver.x;
+        let mut varying = 0;
+        for b in 0..problem.block_count() {
+            let error = check_block_jacobian(problem, x, b, 1e-6);
+            assert!(error < 1e-5, "block {b}: Jacobian error {error}");
+        }
+        for k in 0..problem.interior().len() {
+            if problem.target(k, x).derivative != 0.0 {
+                varying += 1;
+            }
+        }
+        assert!(varying > 50, "only {varying} vertices have a field-dependent target");
+    }
 }
