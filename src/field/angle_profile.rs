@@ -12,12 +12,10 @@ use serde::{Deserialize, Serialize};
 /// Outside that range the cubic is extrapolated.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct AngleProfile {
-    /// `c0..c3` in degrees.
-    pub coefficients: [f64; 4],
-    /// Smallest field value of the fitted samples (caller's field units).
-    pub field_min: f64,
-    /// Largest field value of the fitted samples; `> field_min`.
-    pub field_max: f64,
+    coefficients: [f64; 4],
+    field_min: f64,
+    /// `> field_min` (checked by `fit`, the only constructor).
+    field_max: f64,
 }
 
 impl AngleProfile {
@@ -29,7 +27,8 @@ impl AngleProfile {
         }
         let field_min = samples.iter().map(|s| s.0).fold(f64::INFINITY, f64::min);
         let field_max = samples.iter().map(|s| s.0).fold(f64::NEG_INFINITY, f64::max);
-        if !(field_max > field_min) {
+        // The samples are finite here, so the range is empty exactly when max ≤ min.
+        if field_max <= field_min {
             return None;
         }
         let frame = AngleProfile { coefficients: [0.0; 4], field_min, field_max };
@@ -47,6 +46,16 @@ impl AngleProfile {
         // Cholesky factor may then still exist with a meaningless, huge solution.
         let distinct = count_distinct(samples.iter().map(|s| s.0));
         (distinct >= 4 && profile.coefficients.iter().all(|c| c.is_finite())).then_some(profile)
+    }
+
+    /// `c0..c3` in degrees.
+    pub fn coefficients(&self) -> [f64; 4] {
+        self.coefficients
+    }
+
+    /// `(F_min, F_max)`: the range of the fitted samples' field values, mapped to `s ∈ [−1, 1]`.
+    pub fn field_range(&self) -> (f64, f64) {
+        (self.field_min, self.field_max)
     }
 
     /// `θ(F)` in degrees.

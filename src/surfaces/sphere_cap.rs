@@ -46,3 +46,46 @@ pub fn sphere_cap(cap: &SphereCap) -> Result<GeneratedSurface, SurfaceError> {
         .collect();
     Ok(GeneratedSurface { positions, faces })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cap(cap_angle: f64, seed: u64) -> SphereCap {
+        SphereCap { radius: 4.0, cap_angle, target_vertices: 700, irregularity: 0.3, seed }
+    }
+
+    #[test]
+    fn lies_on_the_sphere_with_an_exact_boundary_circle_and_outward_normals() {
+        for (angle, seed) in [(0.4, 1), (1.2, 2), (2.5, 3)] {
+            let surface = sphere_cap(&cap(angle, seed)).expect("valid cap");
+            let mesh = surface.clone().into_mesh().expect("valid mesh");
+            let n = mesh.vertex_count();
+            assert!((n as f64 - 700.0).abs() < 0.1 * 700.0, "{n} vertices");
+            for p in mesh.positions() {
+                assert!((p.norm() - 4.0).abs() < 1e-12, "off the sphere: {p:?}");
+                assert!((p.z / 4.0).acos() <= angle + 1e-12, "outside the cap: {p:?}");
+            }
+            // Disk topology: one boundary loop and Euler characteristic 1.
+            assert_eq!(mesh.boundary_loops().len(), 1);
+            assert_eq!(n as i64 - mesh.edges().len() as i64 + mesh.face_count() as i64, 1);
+            for &v in &mesh.boundary_loops()[0] {
+                let polar = (mesh.positions()[v as usize].z / 4.0).acos();
+                assert!((polar - angle).abs() < 1e-12, "boundary vertex at polar angle {polar}");
+            }
+            for (f, normal) in mesh.face_normals().iter().enumerate() {
+                let centroid: Vec3 = mesh.faces()[f].iter().map(|&v| mesh.positions()[v as usize]).sum::<Vec3>() / 3.0;
+                assert!(normal.dot(&centroid.normalize()) > 0.9, "face {f} does not point outward");
+            }
+        }
+    }
+
+    #[test]
+    fn invalid_parameters_are_rejected() {
+        for angle in [0.0, -0.1, PI, f64::NAN] {
+            assert!(sphere_cap(&cap(angle, 1)).is_err(), "cap angle {angle}");
+        }
+        assert!(sphere_cap(&SphereCap { radius: f64::INFINITY, ..cap(1.0, 1) }).is_err());
+        assert!(sphere_cap(&SphereCap { irregularity: 2.0, ..cap(1.0, 1) }).is_err());
+    }
+}
