@@ -2,7 +2,6 @@
 //! polynomial of degree 3 fitted by least squares to the data `(F_v, θ_v)` measured at the
 //! vertices.
 
-use super::pseudo_geodesic::TargetAngle;
 use nalgebra::{Matrix4, Vector4};
 use serde::{Deserialize, Serialize};
 
@@ -65,13 +64,6 @@ impl AngleProfile {
         c0 + s * (c1 + s * (c2 + s * c3))
     }
 
-    /// `dθ/dF` in degrees per field unit.
-    pub fn derivative(&self, field_value: f64) -> f64 {
-        let [_, c1, c2, c3] = self.coefficients;
-        let s = self.normalized(field_value);
-        (c1 + s * (2.0 * c2 + s * 3.0 * c3)) * 2.0 / (self.field_max - self.field_min)
-    }
-
     /// The profile multiplied by `factor` (e.g. `1 − 5 %`, the lowering of Sec. 3.2).
     pub fn scaled(&self, factor: f64) -> AngleProfile {
         AngleProfile { coefficients: self.coefficients.map(|c| c * factor), ..*self }
@@ -84,32 +76,6 @@ impl AngleProfile {
     fn powers(&self, field_value: f64) -> Vector4<f64> {
         let s = self.normalized(field_value);
         Vector4::new(1.0, s, s * s, s * s * s)
-    }
-}
-
-/// A profile as the target of the solver's normalised field: `θ_v = clamp(θ(F_v), min, max)`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct ClampedProfile {
-    pub profile: AngleProfile,
-    /// Normalised field = profile's field × `field_scale`.
-    pub field_scale: f64,
-    pub min_degrees: f64,
-    pub max_degrees: f64,
-}
-
-impl ClampedProfile {
-    /// The target at a vertex with normalised field value `value`; where the clamp is active the
-    /// target does not depend on the field.
-    pub fn target_at(&self, value: f64) -> TargetAngle {
-        let f = value / self.field_scale;
-        let theta = self.profile.evaluate(f);
-        if theta <= self.min_degrees {
-            TargetAngle::from_degrees(self.min_degrees)
-        } else if theta >= self.max_degrees {
-            TargetAngle::from_degrees(self.max_degrees)
-        } else {
-            TargetAngle::varying(theta, self.profile.derivative(f).to_radians() / self.field_scale)
-        }
     }
 }
 
@@ -134,10 +100,6 @@ mod tests {
             assert!((profile.evaluate(f) - theta(f)).abs() < 1e-9, "at {f}: {} vs {}", profile.evaluate(f), theta(f));
         }
         assert!((profile.scaled(0.95).evaluate(15.0) - 0.95 * theta(15.0)).abs() < 1e-9);
-        let slope = |f: f64| -3.0 + f - 0.06 * f * f;
-        for f in [10.5, 16.0, 20.0] {
-            assert!((profile.derivative(f) - slope(f)).abs() < 1e-8, "at {f}: {} vs {}", profile.derivative(f), slope(f));
-        }
     }
 
     #[test]

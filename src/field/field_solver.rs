@@ -1,7 +1,6 @@
 //! The stepwise field optimiser (Sec. 3.2.2): create it, `step` it a few iterations at a
 //! time, read the field and the binormals in between, change the weights, continue.
 
-use super::angle_profile::{AngleProfile, ClampedProfile};
 use super::darboux::{level_frame, LevelFrame};
 use super::error::FieldError;
 use super::gradient_norm::mean_gradient_norm;
@@ -149,22 +148,13 @@ impl FieldSolver {
         Ok(())
     }
 
-    /// Makes the target of every vertex `clamp(θ(F_v))` for a profile over the caller's field
-    /// values, and restarts the convergence test: the energy changed.
-    pub(super) fn retarget(&mut self, profile: AngleProfile, min_degrees: f64, max_degrees: f64) {
-        self.problem.set_angle_profile(ClampedProfile { profile, field_scale: self.scales.field, min_degrees, max_degrees });
+    /// Gives each interior vertex its own target angle (degrees, one per entry of the problem's
+    /// `interior`, validated by the caller) and restarts the convergence test: the energy changed.
+    pub(super) fn retarget(&mut self, degrees: &[f64]) {
+        self.problem.set_vertex_targets(degrees);
         self.slow_iterations = 0;
         self.converged = false;
         self.last_report = self.measure(0, 0);
-    }
-
-    /// Smallest and largest target angle in degrees over the interior vertices (`None` without any).
-    pub(super) fn target_range_degrees(&self) -> Option<[f64; 2]> {
-        let targets = (0..self.problem.interior().len()).map(|k| self.problem.target(k, &self.x).degrees);
-        targets.fold(None, |range, t| match range {
-            None => Some([t, t]),
-            Some([lo, hi]) => Some([lo.min(t), hi.max(t)]),
-        })
     }
 
     /// The mesh in the caller's units: the solver's unit-scaled copy scaled back (the input

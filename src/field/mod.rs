@@ -30,4 +30,4 @@ pub use problem::FieldProblem;
 pub use params::{Family, FieldParams, Stage, VaryingAngleParams, Weights, SETTLING_ITERATIONS};
 pub use report::{Energies, StepReport};
 pub use session::{SESSION_MAGIC, SESSION_VERSION};
-pub use varying_angle::{VaryingAngleReport, VaryingAngleSolver, LEVEL_ANGLE_SPACING};
+pub use varying_angle::{VaryingAngleReport, VaryingAngleSolver, LEVEL_ANGLE_SPACING, SETTLED_TARGET_DEGREES};

@@ -94,7 +94,7 @@ impl FieldParams {
 /// The target angle is a cubic `θ(F)` fitted to the angles the field's level curves have; every
 /// `update_interval` iterations the fit is redone and lowered by `lowering` (5 % in the paper),
 /// toward 0°, the asymptotic direction, until `max_updates` lowerings have been made or the
-/// caller freezes the profile; then the optimisation converges to the frozen targets.
+/// caller freezes the profile; then the optimisation converges to the frozen profile `θ(F_v)`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct VaryingAngleParams {
     /// Weights, warm-up schedule, `E_grad` target, tolerance and solver settings. Its `family`

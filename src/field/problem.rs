@@ -8,7 +8,6 @@
 //! vertex. A curve block declares the field values of the whole vertex star, so the sparsity
 //! pattern stays fixed while the crossed edges `p`, `q` move around the star.
 
-use super::angle_profile::ClampedProfile;
 use super::hessian_energy::HessianEnergy;
 use super::params::{Family, Weights};
 use super::pseudo_geodesic::TargetAngle;
@@ -34,8 +33,9 @@ pub struct FieldProblem {
     family: Family,
     /// The family's target angle θ.
     target: TargetAngle,
-    /// A varying-angle profile `θ(F)` (Fig. 16) that replaces `target` at every vertex.
-    profile: Option<ClampedProfile>,
+    /// Per-vertex targets (index `k` as in `interior`) of a varying-angle family (Fig. 16),
+    /// replacing `target`.
+    vertex_targets: Option<Vec<TargetAngle>>,
     weights: Weights,
     gradient_target: f64,
     /// Interior vertices, in increasing order: the owners of curve blocks.
@@ -64,7 +64,7 @@ impl FieldProblem {
         FieldProblem {
             fairness,
             target: TargetAngle::from_degrees(family.theta_degrees()),
-            profile: None,
+            vertex_targets: None,
             family,
             weights,
             gradient_target,
@@ -108,17 +108,19 @@ impl FieldProblem {
         self.gradient_target
     }
 
-    /// Target angle of the `k`-th interior vertex for the variables `x`.
-    pub(crate) fn target(&self, k: usize, x: &[f64]) -> TargetAngle {
-        match &self.profile {
-            Some(profile) => profile.target_at(x[self.interior[k] as usize]),
+    /// Target angle of the `k`-th interior vertex.
+    pub(crate) fn target(&self, k: usize) -> TargetAngle {
+        match &self.vertex_targets {
+            Some(targets) => targets[k],
             None => self.target,
         }
     }
 
-    /// Makes the target of every vertex `θ(F_v)` (pseudo-geodesics only).
-    pub(crate) fn set_angle_profile(&mut self, profile: ClampedProfile) {
-        self.profile = Some(profile);
+    /// Gives each interior vertex its own target angle (degrees, one per entry of `interior`,
+    /// validated by the caller). Only meaningful for pseudo-geodesics.
+    pub(crate) fn set_vertex_targets(&mut self, degrees: &[f64]) {
+        debug_assert_eq!(degrees.len(), self.interior.len());
+        self.vertex_targets = Some(degrees.iter().map(|&theta| TargetAngle::from_degrees(theta)).collect());
     }
 
     pub fn set_weights(&mut self, weights: Weights) {
@@ -175,7 +177,7 @@ impl FieldProblem {
                         let start = self.auxiliary_start(k);
                         let aux = &x[start..start + pseudo_geodesic::AUXILIARIES];
                         let aux_column = 1 + self.mesh.star(v).neighbours.len();
-                        pseudo_geodesic::evaluate(&self.mesh, x, v, aux, self.target(k, x), scale, residuals, jacobian, aux_column);
+                        pseudo_geodesic::evaluate(&self.mesh, x, v, aux, self.target(k), scale, residuals, jacobian, aux_column);
                     }
                     Family::Geodesic => geodesic::evaluate(&self.mesh, x, v, scale, residuals, jacobian),
                     Family::Asymptotic => asymptotic::evaluate(&self.mesh, x, v, scale, residuals, jacobian),

@@ -13,8 +13,7 @@
 //! | 6, 7 | `u·n`, `u·u − 1` | Eq. 10 |
 //!
 //! Rows 2, 3 and 5 use normalised chords with their exact derivatives (no frozen norms).
-//! Singular vertices (see [`super::crossing`]) get zero rows. When the target is a function
-//! `θ(F_v)` of the vertex's field value (varying angle, Fig. 16), rows 0 and 1 also depend on `F_v`.
+//! Singular vertices (see [`super::crossing`]) get zero rows.
 
 use super::star_chords::clear_rows_at_vertex;
 use crate::mesh::{TriMesh, Vec3};
@@ -25,27 +24,19 @@ pub(crate) const ROWS: usize = 8;
 pub(crate) const AUXILIARIES: usize = 6;
 
 /// The target angle `θ_v` between binormal and surface normal at one vertex, in degrees and as
-/// `cos θ`, `sin θ`, with its derivative `dθ/dF_v` (radians per field unit) where the target is a
-/// function of the vertex's own field value. One global θ (Eq. 8) gives every vertex the same
-/// constant target; the varying-angle families of Fig. 16 give each vertex `θ(F_v)`.
+/// `cos θ`, `sin θ`. One global θ (Eq. 8) gives every vertex the same target; the varying-angle
+/// families of Fig. 16 give each vertex its own, held constant during each iteration.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct TargetAngle {
     pub degrees: f64,
     pub cos: f64,
     pub sin: f64,
-    pub derivative: f64,
 }
 
 impl TargetAngle {
-    /// A constant target.
     pub fn from_degrees(theta: f64) -> Self {
-        Self::varying(theta, 0.0)
-    }
-
-    /// The target `theta` (degrees) with `dθ/dF_v = derivative` (radians per field unit).
-    pub fn varying(theta: f64, derivative: f64) -> Self {
         let r = theta.to_radians();
-        TargetAngle { degrees: theta, cos: r.cos(), sin: r.sin(), derivative }
+        TargetAngle { degrees: theta, cos: r.cos(), sin: r.sin() }
     }
 }
 
@@ -101,12 +92,6 @@ pub(crate) fn evaluate(
     set(5, uc, t);
     set(6, uc, n);
     set(7, uc, u * 2.0);
-    if target.derivative != 0.0 {
-        // θ = θ(F0): ∂(−cos²θ)/∂F0 = sin 2θ θ', ∂(−sin θ cos θ)/∂F0 = −cos 2θ θ' (field column 0).
-        let (sin2, cos2) = (2.0 * target.sin * target.cos, target.cos * target.cos - target.sin * target.sin);
-        jac[0] += scale * sin2 * target.derivative;
-        jac[columns] -= scale * cos2 * target.derivative;
-    }
     chords.to_p.add_normalized_dot_partials(&b, scale, &mut jac[2 * columns..3 * columns]);
     chords.to_q.add_normalized_dot_partials(&b, scale, &mut jac[3 * columns..4 * columns]);
     chords.tangent.add_normalized_dot_partials(&u, scale, &mut jac[5 * columns..6 * columns]);

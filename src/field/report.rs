@@ -63,7 +63,7 @@ impl StepReport {
                 None => report.singular_vertices.push(v),
                 Some(measured) => {
                     if let Some(measured) = measured {
-                        let error = angle_error(problem.family(), measured, problem.target(k, x).degrees);
+                        let error = angle_error(problem.family(), measured, problem.target(k).degrees);
                         sum_squares += error * error;
                         report.angle_error_max_degrees = report.angle_error_max_degrees.max(error);
                         report.measured_vertices += 1;
