@@ -148,6 +148,15 @@ impl FieldSolver {
         Ok(())
     }
 
+    /// Gives each interior vertex its own target angle (degrees, one per entry of the problem's
+    /// `interior`, validated by the caller) and restarts the convergence test: the energy changed.
+    pub(super) fn retarget(&mut self, degrees: &[f64]) {
+        self.problem.set_vertex_targets(degrees);
+        self.slow_iterations = 0;
+        self.converged = false;
+        self.last_report = self.measure(0, 0);
+    }
+
     /// The mesh in the caller's units: the solver's unit-scaled copy scaled back (the input
     /// mesh up to rounding, and the same for a session restored by `from_bytes`).
     pub fn mesh(&self) -> TriMesh {
@@ -170,7 +179,7 @@ impl FieldSolver {
         self.problem.mesh().vertex_count()
     }
 
-    fn internal_field(&self) -> &[f64] {
+    pub(super) fn internal_field(&self) -> &[f64] {
         &self.x[..self.vertex_count()]
     }
 

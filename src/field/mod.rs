@@ -1,6 +1,8 @@
 //! Scalar fields on a mesh whose level sets form a chosen curve family: pseudo-geodesics,
-//! geodesics or asymptotic curves (paper Sec. 3.1–3.2.2).
+//! geodesics or asymptotic curves (paper Sec. 3.1–3.2.2), and P-curve families whose angle varies
+//! from level to level (Sec. 3.2, Fig. 16).
 
+mod angle_profile;
 mod asymptotic;
 mod crossing;
 mod darboux;
@@ -9,18 +11,23 @@ mod field_solver;
 mod geodesic;
 mod gradient_norm;
 pub mod hessian_energy;
+mod level_angles;
 mod params;
 mod problem;
 mod pseudo_geodesic;
 mod report;
 mod session;
 mod star_chords;
+mod varying_angle;
 
+pub use angle_profile::AngleProfile;
 pub use crossing::{find_level_crossing, EdgeCrossing, LevelCrossing};
 pub use darboux::{level_frame, LevelFrame};
 pub use error::FieldError;
 pub use field_solver::FieldSolver;
+pub use level_angles::{level_angles, AngleRange, LevelAngles};
 pub use problem::FieldProblem;
-pub use params::{Family, FieldParams, Stage, Weights, SETTLING_ITERATIONS};
+pub use params::{Family, FieldParams, Stage, VaryingAngleParams, Weights, SETTLING_ITERATIONS};
 pub use report::{Energies, StepReport};
 pub use session::{SESSION_MAGIC, SESSION_VERSION};
+pub use varying_angle::{VaryingAngleReport, VaryingAngleSolver, LEVEL_ANGLE_SPACING, SETTLED_TARGET_DEGREES};

@@ -87,3 +87,50 @@ impl FieldParams {
         Self::new(Family::PseudoGeodesic { theta_degrees })
     }
 }
+
+/// Parameters of a family with varying angle (Sec. 3.2, Fig. 16), see
+/// [`VaryingAngleSolver`](super::VaryingAngleSolver).
+///
+/// The target angle is a cubic `θ(F)` fitted to the angles the field's level curves have; every
+/// `update_interval` iterations the fit is redone and lowered by `lowering` (5 % in the paper),
+/// toward 0°, the asymptotic direction, until `max_updates` lowerings have been made or the
+/// caller freezes the profile; then the optimisation converges to the frozen profile `θ(F_v)`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct VaryingAngleParams {
+    /// Weights, warm-up schedule, `E_grad` target, tolerance and solver settings. Its `family`
+    /// is not used: the targets come from the fitted profile.
+    pub field: FieldParams,
+    /// Fraction by which each update lowers the fitted profile, in `[0, 1)`; the paper uses 0.05.
+    pub lowering: f64,
+    /// Iterations between two updates of the profile, ≥ 1. The authors' code updates every
+    /// iteration; a few iterations let the field follow each target before it is measured again.
+    pub update_interval: usize,
+    /// Lowerings after which the profile freezes by itself.
+    pub max_updates: usize,
+    /// Per-vertex targets are clamped to `[min_degrees, max_degrees]`, with
+    /// `0 ≤ min_degrees < max_degrees ≤ 180`. The paper's scheme assumes `θ ≤ 90°` (the level
+    /// curves bend toward increasing `F`; negate a field that bends the other way).
+    pub min_degrees: f64,
+    pub max_degrees: f64,
+}
+
+impl VaryingAngleParams {
+    /// The paper's scheme: 5 % lowering, targets in `[0°, 90°]`, with the default weights of
+    /// [`FieldParams::new`], one update every 5 iterations and at most 10 lowerings.
+    pub fn new() -> Self {
+        VaryingAngleParams {
+            field: FieldParams::new(Family::PseudoGeodesic { theta_degrees: 45.0 }),
+            lowering: 0.05,
+            update_interval: 5,
+            max_updates: 10,
+            min_degrees: 0.0,
+            max_degrees: 90.0,
+        }
+    }
+}
+
+impl Default for VaryingAngleParams {
+    fn default() -> Self {
+        Self::new()
+    }
+}

@@ -31,7 +31,11 @@ pub struct FieldProblem {
     mesh: TriMesh,
     fairness: HessianEnergy,
     family: Family,
+    /// The family's target angle θ.
     target: TargetAngle,
+    /// Per-vertex targets (index `k` as in `interior`) of a varying-angle family (Fig. 16),
+    /// replacing `target`.
+    vertex_targets: Option<Vec<TargetAngle>>,
     weights: Weights,
     gradient_target: f64,
     /// Interior vertices, in increasing order: the owners of curve blocks.
@@ -60,6 +64,7 @@ impl FieldProblem {
         FieldProblem {
             fairness,
             target: TargetAngle::from_degrees(family.theta_degrees()),
+            vertex_targets: None,
             family,
             weights,
             gradient_target,
@@ -101,6 +106,21 @@ impl FieldProblem {
     /// Target `‖∇F‖` of `E_grad` on this problem's scale.
     pub(crate) fn gradient_target(&self) -> f64 {
         self.gradient_target
+    }
+
+    /// Target angle of the `k`-th interior vertex.
+    pub(crate) fn target(&self, k: usize) -> TargetAngle {
+        match &self.vertex_targets {
+            Some(targets) => targets[k],
+            None => self.target,
+        }
+    }
+
+    /// Gives each interior vertex its own target angle (degrees, one per entry of `interior`,
+    /// validated by the caller). Only meaningful for pseudo-geodesics.
+    pub(crate) fn set_vertex_targets(&mut self, degrees: &[f64]) {
+        debug_assert_eq!(degrees.len(), self.interior.len());
+        self.vertex_targets = Some(degrees.iter().map(|&theta| TargetAngle::from_degrees(theta)).collect());
     }
 
     pub fn set_weights(&mut self, weights: Weights) {
@@ -157,7 +177,7 @@ impl FieldProblem {
                         let start = self.auxiliary_start(k);
                         let aux = &x[start..start + pseudo_geodesic::AUXILIARIES];
                         let aux_column = 1 + self.mesh.star(v).neighbours.len();
-                        pseudo_geodesic::evaluate(&self.mesh, x, v, aux, self.target, scale, residuals, jacobian, aux_column);
+                        pseudo_geodesic::evaluate(&self.mesh, x, v, aux, self.target(k), scale, residuals, jacobian, aux_column);
                     }
                     Family::Geodesic => geodesic::evaluate(&self.mesh, x, v, scale, residuals, jacobian),
                     Family::Asymptotic => asymptotic::evaluate(&self.mesh, x, v, scale, residuals, jacobian),

@@ -1,4 +1,4 @@
-//! `E_angle`, the pseudo-geodesic angle energy of Eq. 8, with the auxiliary unit binormal
+//! `E_angle`, the pseudo-geodesic angle energy of Eq. 8 (to a target angle `θ_v` per vertex), with the auxiliary unit binormal
 //! `b` (Eq. 9) and side vector `u` (Eq. 10) of each interior vertex.
 //!
 //! Rows per regular vertex, all scaled by `√(λ_angle · A_v)` (A normalised to mean 1):
@@ -23,9 +23,12 @@ pub(crate) const ROWS: usize = 8;
 /// Auxiliary variables per interior vertex: `b` then `u`.
 pub(crate) const AUXILIARIES: usize = 6;
 
-/// `cos θ` and `sin θ` of the target angle between binormal and surface normal.
-#[derive(Clone, Copy, Debug)]
+/// The target angle `θ_v` between binormal and surface normal at one vertex, in degrees and as
+/// `cos θ`, `sin θ`. One global θ (Eq. 8) gives every vertex the same target; the varying-angle
+/// families of Fig. 16 give each vertex its own, held constant during each iteration.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct TargetAngle {
+    pub degrees: f64,
     pub cos: f64,
     pub sin: f64,
 }
@@ -33,7 +36,7 @@ pub(crate) struct TargetAngle {
 impl TargetAngle {
     pub fn from_degrees(theta: f64) -> Self {
         let r = theta.to_radians();
-        TargetAngle { cos: r.cos(), sin: r.sin() }
+        TargetAngle { degrees: theta, cos: r.cos(), sin: r.sin() }
     }
 }
 

@@ -3,6 +3,7 @@
 use super::darboux::level_frame;
 use super::params::{Family, Weights};
 use super::problem::{Block, FieldProblem};
+use crate::mesh::TriMesh;
 use crate::solver::LeastSquaresProblem;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -33,7 +34,7 @@ pub struct StepReport {
     /// Index of the weight stage in force (`schedule.len()` for the final weights).
     pub stage: usize,
     pub energies: Energies,
-    /// RMS and maximum of `|θ_measured − θ|` in degrees over regular interior vertices
+    /// RMS and maximum of `|θ_measured − θ_v|` in degrees (`θ_v` the vertex's target) over regular interior vertices
     /// with a defined binormal, measured from the field's own level polylines.
     pub angle_error_rms_degrees: f64,
     pub angle_error_max_degrees: f64,
@@ -55,20 +56,14 @@ impl StepReport {
         let mut report = StepReport { energies: energies(problem, x), ..StepReport::default() };
         let mesh = problem.mesh();
         let field = &x[..mesh.vertex_count()];
-        let theta = problem.family().theta_degrees();
-        // Frames in parallel, folded in vertex order (the result does not depend on the threads).
-        let frames: Vec<Option<Option<f64>>> = problem
-            .interior()
-            .par_iter()
-            .map(|&v| level_frame(mesh, field, v as usize).map(|frame| frame.signed_angle_degrees()))
-            .collect();
+        let frames = measured_angles(mesh, field, problem.interior());
         let mut sum_squares = 0.0;
-        for (&v, frame) in problem.interior().iter().zip(frames) {
+        for (k, (&v, frame)) in problem.interior().iter().zip(frames).enumerate() {
             match frame {
                 None => report.singular_vertices.push(v),
                 Some(measured) => {
                     if let Some(measured) = measured {
-                        let error = angle_error(problem.family(), measured, theta);
+                        let error = angle_error(problem.family(), measured, problem.target(k).degrees);
                         sum_squares += error * error;
                         report.angle_error_max_degrees = report.angle_error_max_degrees.max(error);
                         report.measured_vertices += 1;
@@ -81,6 +76,17 @@ impl StepReport {
         }
         report
     }
+}
+
+/// The measured signed angle (degrees, [`super::LevelFrame::signed_angle_degrees`]) at each of
+/// `vertices`: `None` at singular vertices, `Some(None)` where the level polyline is straight.
+/// Frames are measured in parallel and returned in the order of `vertices` (the result does not
+/// depend on the threads).
+pub(crate) fn measured_angles(mesh: &TriMesh, field: &[f64], vertices: &[u32]) -> Vec<Option<Option<f64>>> {
+    vertices
+        .par_iter()
+        .map(|&v| level_frame(mesh, field, v as usize).map(|frame| frame.signed_angle_degrees()))
+        .collect()
 }
 
 /// Angle error of a measured signed angle. Geodesics and asymptotic curves have no sign:

@@ -13,6 +13,7 @@ mod hyperbolic_paraboloid;
 mod jittered_grid;
 mod planar_disk;
 mod random;
+mod sphere_cap;
 mod vault;
 
 pub use cylinder_patch::{cylinder_patch, CylinderPatch};
@@ -20,6 +21,7 @@ pub use hall_roof::{hall_roof, HallRoofSection};
 pub use hyperbolic_paraboloid::{hyperbolic_paraboloid, HyperbolicParaboloid};
 pub use planar_disk::{planar_disk, PlanarPatch};
 pub use random::SplitMix64;
+pub use sphere_cap::{sphere_cap, SphereCap};
 pub use vault::{vault, Vault};
 
 use crate::mesh::{MeshError, TriMesh, Vec3};
