@@ -1,7 +1,8 @@
 //! Lamella: rectifying strip patterns (Wang, Wang, Schling, Pottmann, SIGGRAPH Asia 2023).
 //!
-//! The pipeline, one module per stage: a validated triangle [`mesh`]; a scalar [`field`] whose
-//! level sets are pseudo-geodesics, optimised by the sparse Levenberg–Marquardt [`solver`];
+//! The pipeline, one module per stage: a validated triangle [`mesh`]; guide curves [`tracing`]
+//! on it (Sec. 3.2.1); a scalar [`field`] whose level sets are pseudo-geodesics, optimised by
+//! the sparse Levenberg–Marquardt [`solver`];
 //! its level [`curves`]; the rectifying developable [`strips`] along them with their flat
 //! unrollings; the C ABI in [`ffi`]; procedural [`surfaces`] for tests and the demo.
 pub mod curves;
@@ -11,3 +12,4 @@ pub mod mesh;
 pub mod solver;
 pub mod strips;
 pub mod surfaces;
+pub mod tracing;

@@ -1,0 +1,70 @@
+//! One propagation step (Sec. 3.2.1, Fig. 13): from the segment `p_{i−1} p_i`, the next point
+//! `p_{i+1}` on a candidate edge solves Eq. 4,
+//! `[(g_i × g_{i+1})·n_i]² − ‖g_i × g_{i+1}‖²·cos²θ = 0`, with `g_i = p_i − p_{i−1}`,
+//! `g_{i+1} = p_{i+1} − p_i`; of its two roots (the osculating planes σ1, σ2 of Fig. 8) the
+//! signed Darboux-frame angle of Sec. 3.1 keeps the one of the traced family. At the start
+//! point the incoming direction `g_0` is the prescribed start tangent instead of a segment.
+
+use super::edge_search::{cone_coefficients, nearest_solution, Found};
+use super::neighbourhood::candidate_edges;
+use super::normal::point_normal;
+use super::TraceOptions;
+use crate::field::LevelFrame;
+use crate::mesh::{EdgeFaces, EdgePoint, TriMesh, Vec3};
+
+/// Below this `‖ê_i × ê_{i+1}‖` two segments are collinear: the osculating plane is undefined
+/// and a straight continuation is the zero-curvature limit of every P-curve (flat regions).
+const STRAIGHT: f64 = 1e-9;
+
+/// Where a step starts: the current point, its position, and the face the curve arrived
+/// through (`None` at the start point).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct StepFrom<'a> {
+    pub point: &'a EdgePoint,
+    pub position: &'a Vec3,
+    pub arrived: Option<u32>,
+}
+
+/// The next point after `from`, entered along `incoming` (`g_i`); `None` if no candidate edge
+/// point is forward (turn below 90°), farther than `d0` and of the traced family within tolerance.
+pub(crate) fn next_point(
+    mesh: &TriMesh,
+    adjacency: &EdgeFaces,
+    from: StepFrom<'_>,
+    incoming: &Vec3,
+    theta_degrees: f64,
+    options: &TraceOptions,
+) -> Option<Found> {
+    let normal = point_normal(mesh, from.point)?;
+    let g = *incoming;
+    let candidates = candidate_edges(mesh, adjacency, from.point, from.arrived, options.vertex_ratio);
+    let min_step = options.min_step_ratio * mesh.mean_edge_length();
+    let cos = theta_degrees.to_radians().cos();
+    nearest_solution(
+        mesh,
+        from.position,
+        &candidates,
+        min_step,
+        |x0, x1| cone_coefficients(&g.cross(x0), &g.cross(x1), &normal, cos),
+        |step, _| step.dot(&g) > 0.0 && angle_within(&g, step, &normal, theta_degrees, options.angle_tolerance_degrees),
+    )
+}
+
+/// Whether the turn `incoming → outgoing` at a point with unit `normal` realises the signed
+/// binormal angle θ (Sec. 3.1, measured as [`LevelFrame::signed_angle_degrees`] with the tangent
+/// of Eq. 1 and the side vector `u = n × t`) within `tolerance` degrees. The angle is defined
+/// modulo 180° (`b ~ −b`), so θ = 0 and θ = 180 both mean asymptotic.
+pub(crate) fn angle_within(incoming: &Vec3, outgoing: &Vec3, normal: &Vec3, theta_degrees: f64, tolerance: f64) -> bool {
+    let (e_in, e_out) = (incoming.normalize(), outgoing.normalize());
+    let cross = e_in.cross(&e_out);
+    if cross.norm() < STRAIGHT {
+        return true;
+    }
+    let Some(tangent) = (e_in + e_out).try_normalize(0.0) else { return false };
+    let Some(side) = normal.cross(&tangent).try_normalize(0.0) else { return false };
+    let frame = LevelFrame { tangent, normal: *normal, side, binormal: Some(cross.normalize()) };
+    frame.signed_angle_degrees().is_some_and(|angle| {
+        let difference = (angle - theta_degrees).abs();
+        difference.min(180.0 - difference) <= tolerance
+    })
+}
