@@ -32,8 +32,10 @@ pub(crate) fn cone_coefficients(x0: &Vec3, x1: &Vec3, axis: &Vec3, cos: f64) -> 
 }
 
 /// The nearest point to `from` on the `candidates` that solves the equation whose coefficients
-/// `coefficients(v_s − from, v_e − v_s)` gives, lies farther than `min_step` from `from`, and
-/// passes `accept(P − from, face)`. Ties keep the earlier candidate.
+/// `coefficients(v_s − from, v_e − v_s)` gives, lies farther than `min_step` (`d0`) from `from`,
+/// and passes `accept(P − from, face)`. Ties keep the earlier candidate. On a boundary edge
+/// any positive distance will do: `d0` protects the osculating plane of the *next* step, and
+/// the curve ends there.
 pub(crate) fn nearest_solution(
     mesh: &TriMesh,
     from: &Vec3,
@@ -58,7 +60,8 @@ pub(crate) fn nearest_solution(
             let step = position - from;
             let distance = step.norm();
             let nearer = best.as_ref().is_none_or(|(d, _)| distance < *d);
-            if distance > min_step && nearer && accept(&step, candidate.face) {
+            let floor = if candidate.on_boundary { 0.0 } else { min_step };
+            if distance > floor && nearer && accept(&step, candidate.face) {
                 let point = EdgePoint { edge: candidate.edge, t };
                 best = Some((distance, Found { point, position, face: candidate.face }));
             }

@@ -1,23 +1,36 @@
 //! Where the next point is searched (Fig. 13): the edges of the triangle across the current
-//! edge and, near a vertex, the edges opposite that vertex in its whole one-ring.
+//! edge and, near a vertex or when that triangle holds no solution, the edges opposite the
+//! current edge's end vertices in their whole one-rings.
 
 use crate::mesh::{EdgeFaces, EdgePoint, TriMesh};
 
 /// An edge `[a, b]` (`a < b`) on which the next point may lie, with the face whose interior the
-/// segment to it crosses.
+/// segment to it crosses, and whether it is a boundary edge (where the curve will end).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct CandidateEdge {
     pub edge: [u32; 2],
     pub face: u32,
+    pub on_boundary: bool,
+}
+
+/// How widely to search around the current point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Reach {
+    /// The triangle across the edge, plus the one-ring of an end vertex within this fraction
+    /// of the edge (the authors' 1 % vertex merge: a curve passing close to a vertex does not
+    /// stall in its thin wedges).
+    Near { vertex_ratio: f64 },
+    /// The triangle across the edge and the one-rings of both end vertices (the widened
+    /// second round, for a curve that leaves the triangle pair just past a vertex).
+    Wide,
 }
 
 /// The candidate edges around `point` (canonical, on a mesh edge), excluding the face the
 /// curve arrived through (`None` at the start point):
 /// * the other two edges of each face of the current edge except `arrived`, i.e. the triangle
-///   across the edge (the start point's boundary face);
-/// * if `point` is within `vertex_ratio` of an end vertex `v`, also the edge opposite `v` in
-///   every face of its one-ring except `arrived` (the widened search of the authors' code, so
-///   a curve passing close to a vertex does not stall in its thin wedges).
+///   across the edge (at the start point its boundary face);
+/// * the edge opposite `v` in every face of the one-ring of each end vertex `v` that `reach`
+///   includes, except `arrived`.
 ///
 /// Each edge appears once, with the first face that reached it, in a deterministic order.
 pub(crate) fn candidate_edges(
@@ -25,14 +38,15 @@ pub(crate) fn candidate_edges(
     adjacency: &EdgeFaces,
     point: &EdgePoint,
     arrived: Option<u32>,
-    vertex_ratio: f64,
+    reach: Reach,
 ) -> Vec<CandidateEdge> {
     let [a, b] = point.edge;
     let mut candidates: Vec<CandidateEdge> = Vec::new();
     let mut push = |edge: [u32; 2], face: u32| {
         let edge = [edge[0].min(edge[1]), edge[0].max(edge[1])];
         if edge != point.edge && !candidates.iter().any(|c| c.edge == edge) {
-            candidates.push(CandidateEdge { edge, face });
+            let on_boundary = adjacency.is_boundary_edge(edge[0], edge[1]);
+            candidates.push(CandidateEdge { edge, face, on_boundary });
         }
     };
     let faces = mesh.faces();
@@ -45,14 +59,13 @@ pub(crate) fn candidate_edges(
             }
         }
     }
-    let near = if point.t <= vertex_ratio {
-        Some(a)
-    } else if point.t >= 1.0 - vertex_ratio {
-        Some(b)
-    } else {
-        None
+    let rings: &[u32] = match reach {
+        Reach::Near { vertex_ratio } if point.t <= vertex_ratio => &[a],
+        Reach::Near { vertex_ratio } if point.t >= 1.0 - vertex_ratio => &[b],
+        Reach::Near { .. } => &[],
+        Reach::Wide => &[a, b],
     };
-    if let Some(v) = near {
+    for &v in rings {
         // Internal invariant: `v` is a validated vertex index.
         for &f in mesh.star(v as usize).faces.iter().filter(|&&f| Some(f) != arrived) {
             let corners = faces[f as usize];

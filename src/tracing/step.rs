@@ -6,15 +6,18 @@
 //! point the incoming direction `g_0` is the prescribed start tangent instead of a segment.
 
 use super::edge_search::{cone_coefficients, nearest_solution, Found};
-use super::neighbourhood::candidate_edges;
+use super::neighbourhood::{candidate_edges, Reach};
 use super::normal::point_normal;
 use super::TraceOptions;
 use crate::field::LevelFrame;
 use crate::mesh::{EdgeFaces, EdgePoint, TriMesh, Vec3};
 
-/// Below this `‖ê_i × ê_{i+1}‖` two segments are collinear: the osculating plane is undefined
-/// and a straight continuation is the zero-curvature limit of every P-curve (flat regions).
-const STRAIGHT: f64 = 1e-9;
+/// Below this `‖ê_i × ê_{i+1}‖` (a turn of 10⁻⁵ rad) two segments count as collinear: their
+/// osculating plane is undefined, and a straight continuation is the zero-curvature limit of
+/// every P-curve. Eq. 4 has such a (double) root where the curve crosses into a coplanar or
+/// nearly coplanar face: there both osculating planes of Fig. 8 meet the edge where the
+/// straight continuation does, and the measured angle is rounding noise.
+const STRAIGHT: f64 = 1e-5;
 
 /// Where a step starts: the current point, its position, and the face the curve arrived
 /// through (`None` at the start point).
@@ -26,7 +29,8 @@ pub(crate) struct StepFrom<'a> {
 }
 
 /// The next point after `from`, entered along `incoming` (`g_i`); `None` if no candidate edge
-/// point is forward (turn below 90°), farther than `d0` and of the traced family within tolerance.
+/// point is forward (turn below 90°), farther than `d0` and of the traced family within
+/// tolerance, neither in the near search nor in the widened second round.
 pub(crate) fn next_point(
     mesh: &TriMesh,
     adjacency: &EdgeFaces,
@@ -37,17 +41,20 @@ pub(crate) fn next_point(
 ) -> Option<Found> {
     let normal = point_normal(mesh, from.point)?;
     let g = *incoming;
-    let candidates = candidate_edges(mesh, adjacency, from.point, from.arrived, options.vertex_ratio);
     let min_step = options.min_step_ratio * mesh.mean_edge_length();
     let cos = theta_degrees.to_radians().cos();
-    nearest_solution(
-        mesh,
-        from.position,
-        &candidates,
-        min_step,
-        |x0, x1| cone_coefficients(&g.cross(x0), &g.cross(x1), &normal, cos),
-        |step, _| step.dot(&g) > 0.0 && angle_within(&g, step, &normal, theta_degrees, options.angle_tolerance_degrees),
-    )
+    let search = |reach: Reach| {
+        let candidates = candidate_edges(mesh, adjacency, from.point, from.arrived, reach);
+        nearest_solution(
+            mesh,
+            from.position,
+            &candidates,
+            min_step,
+            |x0, x1| cone_coefficients(&g.cross(x0), &g.cross(x1), &normal, cos),
+            |step, _| step.dot(&g) > 0.0 && angle_within(&g, step, &normal, theta_degrees, options.angle_tolerance_degrees),
+        )
+    };
+    search(Reach::Near { vertex_ratio: options.vertex_ratio }).or_else(|| search(Reach::Wide))
 }
 
 /// Whether the turn `incoming → outgoing` at a point with unit `normal` realises the signed
