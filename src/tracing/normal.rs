@@ -7,10 +7,10 @@
 
 use crate::mesh::{EdgePoint, TriMesh, Vec3};
 
-/// `normalize((1 − t)·n_a + t·n_b)` at `point` (valid indices); `None` if that sum vanishes.
+/// `normalize((1 − t)·n_a + t·n_b)` at `point`; `None` if an index is out of range or that
+/// sum vanishes.
 pub(crate) fn point_normal(mesh: &TriMesh, point: &EdgePoint) -> Option<Vec3> {
     let normals = mesh.vertex_normals();
-    let [a, b] = point.edge;
-    // Internal invariant: traced points lie on mesh edges.
-    normals[a as usize].lerp(&normals[b as usize], point.t).try_normalize(0.0)
+    let [a, b] = point.edge.map(|v| normals.get(v as usize));
+    a?.lerp(b?, point.t).try_normalize(0.0)
 }
