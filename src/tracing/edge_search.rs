@@ -31,18 +31,19 @@ pub(crate) fn cone_coefficients(x0: &Vec3, x1: &Vec3, axis: &Vec3, cos: f64) -> 
     )
 }
 
-/// The nearest point to `from` on the `candidates` that solves the equation whose coefficients
-/// `coefficients(v_s − from, v_e − v_s)` gives, lies farther than `min_step` (`d0`) from `from`,
-/// and passes `accept(P − from, face)`. Ties keep the earlier candidate. On a boundary edge
-/// any positive distance will do: `d0` protects the osculating plane of the *next* step, and
-/// the curve ends there.
-pub(crate) fn nearest_solution(
+/// The best point on the `candidates` that solves the equation whose coefficients
+/// `coefficients(v_s − from, v_e − v_s, [s, e])` gives, lies farther than `min_step` (`d0`) from `from`,
+/// and passes `accept(P − from, t, [s, e])`: the one of lowest `score(P − from)`, ties keeping the earlier
+/// candidate. On a boundary edge any positive distance will do: `d0` protects the osculating
+/// plane of the *next* step, and the curve ends there.
+pub(crate) fn best_solution(
     mesh: &TriMesh,
     from: &Vec3,
     candidates: &[CandidateEdge],
     min_step: f64,
-    coefficients: impl Fn(&Vec3, &Vec3) -> (f64, f64, f64),
-    accept: impl Fn(&Vec3, u32) -> bool,
+    coefficients: impl Fn(&Vec3, &Vec3, [u32; 2]) -> (f64, f64, f64),
+    accept: impl Fn(&Vec3, f64, [u32; 2]) -> bool,
+    score: impl Fn(&Vec3) -> f64,
 ) -> Option<Found> {
     let positions = mesh.positions();
     let mut best: Option<(f64, Found)> = None;
@@ -50,7 +51,7 @@ pub(crate) fn nearest_solution(
         let [s, e] = candidate.edge;
         // Internal invariant: candidate edges come from the mesh's faces.
         let (ps, pe) = (positions[s as usize], positions[e as usize]);
-        let (a, b, c) = coefficients(&(ps - from), &(pe - ps));
+        let (a, b, c) = coefficients(&(ps - from), &(pe - ps), candidate.edge);
         for t in candidate_parameters(a, b, c) {
             if !(-END_SLACK..=1.0 + END_SLACK).contains(&t) {
                 continue;
@@ -58,12 +59,14 @@ pub(crate) fn nearest_solution(
             let t = t.clamp(0.0, 1.0);
             let position = ps.lerp(&pe, t);
             let step = position - from;
-            let distance = step.norm();
-            let nearer = best.as_ref().is_none_or(|(d, _)| distance < *d);
             let floor = if candidate.on_boundary { 0.0 } else { min_step };
-            if distance > floor && nearer && accept(&step, candidate.face) {
+            if !(step.norm() > floor && accept(&step, t, candidate.edge)) {
+                continue;
+            }
+            let value = score(&step);
+            if best.as_ref().is_none_or(|(b, _)| value < *b) {
                 let point = EdgePoint { edge: candidate.edge, t };
-                best = Some((distance, Found { point, position, face: candidate.face }));
+                best = Some((value, Found { point, position, face: candidate.face }));
             }
         }
     }

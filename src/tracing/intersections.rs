@@ -156,7 +156,25 @@ fn segment_parameters(p0: (f64, f64), p1: (f64, f64), q0: (f64, f64), q1: (f64, 
 
 #[cfg(test)]
 mod tests {
-    use super::segment_parameters;
+    use super::*;
+    use crate::mesh::EdgePoint;
+    use crate::tracing::StopReason;
+
+    #[test]
+    fn a_looping_curve_intersects_itself() {
+        // The unit square in z = 0 (normals +z) and a hand-made bow tie: segments 0 and 2 cross.
+        let positions = vec![Vec3::new(0.0, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0), Vec3::new(1.0, 1.0, 0.0), Vec3::new(0.0, 1.0, 0.0)];
+        let mesh = TriMesh::from_vertices_and_faces(positions, vec![[0, 1, 2], [0, 2, 3]]).expect("valid");
+        let corners = [(0.1, 0.1), (0.9, 0.9), (0.9, 0.1), (0.1, 0.9)];
+        let points = vec![EdgePoint { edge: [0, 1], t: 0.0 }; 4];
+        let curve = TracedCurve::new(points, corners.iter().map(|&(x, y)| Vec3::new(x, y, 0.0)).collect(), StopReason::Boundary);
+        let report = intersections(&mesh, &[curve]);
+        assert!(report.crossings.is_empty());
+        assert_eq!(report.self_intersections.len(), 1);
+        let hit = &report.self_intersections[0];
+        assert_eq!((hit.curves, hit.segments), ([0, 0], [0, 2]));
+        assert!((hit.position - Vec3::new(0.5, 0.5, 0.0)).norm() < 1e-12);
+    }
 
     #[test]
     fn plane_segments_meet_touch_or_miss() {

@@ -19,11 +19,16 @@ pub struct TraceOptions {
     /// A point within this fraction of its edge's length from an edge end is "near the vertex":
     /// the search for the next point then covers that vertex's whole one-ring (in `[0, 0.5)`).
     pub vertex_ratio: f64,
+    /// Largest turn between consecutive segments, in degrees (0 < turn ≤ 90; the authors' code
+    /// allows 90). A smooth curve turns by about κ·h per step; a much sharper turn jumps to
+    /// another solution, e.g. onto the second asymptotic direction when θ = 0.
+    pub max_turn_degrees: f64,
 }
 
 impl Default for TraceOptions {
     /// No length limit, 100 000 points, `d0` = 0.001 mean edge, 2° tolerance, 1 % vertex ratio
-    /// (the tolerance and the vertex ratio of the authors' code, see the reference notes §4.3).
+    /// (the tolerance and the vertex ratio of the authors' code, see the reference notes §4.3),
+    /// turns up to 45°.
     fn default() -> Self {
         TraceOptions {
             max_length: f64::INFINITY,
@@ -31,6 +36,7 @@ impl Default for TraceOptions {
             min_step_ratio: 1e-3,
             angle_tolerance_degrees: 2.0,
             vertex_ratio: 0.01,
+            max_turn_degrees: 45.0,
         }
     }
 }
@@ -54,6 +60,9 @@ impl TraceOptions {
         }
         if !(self.vertex_ratio >= 0.0 && self.vertex_ratio < 0.5) {
             return bad("vertex_ratio", self.vertex_ratio);
+        }
+        if !(self.max_turn_degrees > 0.0 && self.max_turn_degrees <= 90.0) {
+            return bad("max_turn_degrees", self.max_turn_degrees);
         }
         Ok(())
     }

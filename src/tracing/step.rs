@@ -5,7 +5,7 @@
 //! signed Darboux-frame angle of Sec. 3.1 keeps the one of the traced family. At the start
 //! point the incoming direction `g_0` is the prescribed start tangent instead of a segment.
 
-use super::edge_search::{cone_coefficients, nearest_solution, Found};
+use super::edge_search::{best_solution, cone_coefficients, Found};
 use super::neighbourhood::{candidate_edges, Reach};
 use super::normal::point_normal;
 use super::TraceOptions;
@@ -29,8 +29,8 @@ pub(crate) struct StepFrom<'a> {
 }
 
 /// The next point after `from`, entered along `incoming` (`g_i`); `None` if no candidate edge
-/// point is forward (turn below 90°), farther than `d0` and of the traced family within
-/// tolerance, neither in the near search nor in the widened second round.
+/// point is forward (turn below [`TraceOptions::max_turn_degrees`]), farther than `d0` and of
+/// the traced family within tolerance, neither in the near search nor in the widened second round.
 pub(crate) fn next_point(
     mesh: &TriMesh,
     adjacency: &EdgeFaces,
@@ -43,16 +43,39 @@ pub(crate) fn next_point(
     let g = *incoming;
     let min_step = options.min_step_ratio * mesh.mean_edge_length();
     let cos = theta_degrees.to_radians().cos();
+    let min_turn_cos = options.max_turn_degrees.to_radians().cos();
+    let tolerance = options.angle_tolerance_degrees;
+    let asymptotic = theta_degrees <= tolerance || theta_degrees >= 180.0 - tolerance;
+    let forward = |step: &Vec3| {
+        let along = step.dot(&g);
+        along > 0.0 && along >= min_turn_cos * step.norm() * g.norm()
+    };
     let search = |reach: Reach| {
         let candidates = candidate_edges(mesh, adjacency, from.point, from.arrived, reach);
-        nearest_solution(
-            mesh,
-            from.position,
-            &candidates,
-            min_step,
-            |x0, x1| cone_coefficients(&g.cross(x0), &g.cross(x1), &normal, cos),
-            |step, _| step.dot(&g) > 0.0 && angle_within(&g, step, &normal, theta_degrees, options.angle_tolerance_degrees),
-        )
+        if asymptotic {
+            // Eq. 4 degenerates as θ → 0: its cone flattens onto the tangent plane, every sharp
+            // turn inside that plane has b ≈ n, and a straight asymptotic line (a ruling) has no
+            // osculating plane at all. Its limit is used instead, zero normal curvature along
+            // the step (Rodrigues: II(dx, dx) = −dn·dx): (n(P) − n_i)·(P − p_i) = 0, quadratic
+            // in t with n(P) interpolated along the edge like every point normal.
+            let normals = mesh.vertex_normals();
+            // Internal invariant: candidate edges are mesh edges.
+            let normal_change = |edge: [u32; 2], t: f64| normals[edge[0] as usize].lerp(&normals[edge[1] as usize], t) - normal;
+            let coefficients = |x0: &Vec3, x1: &Vec3, edge: [u32; 2]| {
+                let (a0, a1) = (normal_change(edge, 0.0), normal_change(edge, 1.0) - normal_change(edge, 0.0));
+                (a1.dot(x1), a0.dot(x1) + a1.dot(x0), a0.dot(x0))
+            };
+            let max_cos = tolerance.to_radians().sin();
+            let accept = |step: &Vec3, t: f64, edge: [u32; 2]| {
+                let change = normal_change(edge, t);
+                forward(step) && change.dot(step).abs() <= max_cos * change.norm() * step.norm()
+            };
+            best_solution(mesh, from.position, &candidates, min_step, coefficients, accept, |step| step.norm())
+        } else {
+            let coefficients = |x0: &Vec3, x1: &Vec3, _: [u32; 2]| cone_coefficients(&g.cross(x0), &g.cross(x1), &normal, cos);
+            let accept = |step: &Vec3, _: f64, _: [u32; 2]| forward(step) && angle_within(&g, step, &normal, theta_degrees, tolerance);
+            best_solution(mesh, from.position, &candidates, min_step, coefficients, accept, |step| step.norm())
+        }
     };
     search(Reach::Near { vertex_ratio: options.vertex_ratio }).or_else(|| search(Reach::Wide))
 }
