@@ -33,17 +33,16 @@ pub(crate) fn cone_coefficients(x0: &Vec3, x1: &Vec3, axis: &Vec3, cos: f64) -> 
 
 /// The best point on the `candidates` that solves the equation whose coefficients
 /// `coefficients(v_s − from, v_e − v_s, [s, e])` gives, lies farther than `min_step` (`d0`) from `from`,
-/// and passes `accept(P − from, t, [s, e])`: the one of lowest `score(P − from)`, ties keeping the earlier
+/// and passes `accept(P − from, t, [s, e])`: the nearest such point, ties keeping the earlier
 /// candidate. On a boundary edge any positive distance will do: `d0` protects the osculating
 /// plane of the *next* step, and the curve ends there.
-pub(crate) fn best_solution(
+pub(crate) fn nearest_solution(
     mesh: &TriMesh,
     from: &Vec3,
     candidates: &[CandidateEdge],
     min_step: f64,
     coefficients: impl Fn(&Vec3, &Vec3, [u32; 2]) -> (f64, f64, f64),
     accept: impl Fn(&Vec3, f64, [u32; 2]) -> bool,
-    score: impl Fn(&Vec3) -> f64,
 ) -> Option<Found> {
     let positions = mesh.positions();
     let mut best: Option<(f64, Found)> = None;
@@ -63,10 +62,10 @@ pub(crate) fn best_solution(
             if !(step.norm() > floor && accept(&step, t, candidate.edge)) {
                 continue;
             }
-            let value = score(&step);
-            if best.as_ref().is_none_or(|(b, _)| value < *b) {
+            let distance = step.norm();
+            if best.as_ref().is_none_or(|(nearest, _)| distance < *nearest) {
                 let point = EdgePoint { edge: candidate.edge, t };
-                best = Some((value, Found { point, position, face: candidate.face }));
+                best = Some((distance, Found { point, position, face: candidate.face }));
             }
         }
     }

@@ -8,6 +8,7 @@
 //! `acos(sign(b·u)·(b·n))` between its discrete binormal (Eq. 1) and the surface normal, so θ
 //! and 180° − θ are the two mirror families (Fig. 8, 9).
 
+mod asymptotic;
 mod curve;
 mod edge_search;
 mod error;

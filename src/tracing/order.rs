@@ -100,11 +100,9 @@ impl LoopPlaces {
         let (from, t) = match (va, vb) {
             (Some(va), _) if va.next == b => (va, point.t),
             (_, Some(vb)) if vb.next == a => (vb, 1.0 - point.t),
-            _ => match point.t {
-                t if t == 0.0 => (va?, 0.0),
-                t if t == 1.0 => (vb?, 0.0),
-                _ => return None,
-            },
+            _ if point.t == 0.0 => (va?, 0.0),
+            _ if point.t == 1.0 => (vb?, 0.0),
+            _ => return None,
         };
         let length = self.loop_lengths[from.loop_index];
         Some((from.loop_index, (from.arc + t * from.edge_length) % length))

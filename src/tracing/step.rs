@@ -4,8 +4,11 @@
 //! `g_{i+1} = p_{i+1} − p_i`; of its two roots (the osculating planes σ1, σ2 of Fig. 8) the
 //! signed Darboux-frame angle of Sec. 3.1 keeps the one of the traced family. At the start
 //! point the incoming direction `g_0` is the prescribed start tangent instead of a segment.
+//! For θ within the angle tolerance of 0° or 180° (asymptotic curves) Eq. 4 degenerates and its
+//! limit [`AsymptoticLimit`] takes its place.
 
-use super::edge_search::{best_solution, cone_coefficients, Found};
+use super::asymptotic::AsymptoticLimit;
+use super::edge_search::{cone_coefficients, nearest_solution, Found};
 use super::neighbourhood::{candidate_edges, Reach};
 use super::normal::point_normal;
 use super::TraceOptions;
@@ -53,28 +56,13 @@ pub(crate) fn next_point(
     let search = |reach: Reach| {
         let candidates = candidate_edges(mesh, adjacency, from.point, from.arrived, reach);
         if asymptotic {
-            // Eq. 4 degenerates as θ → 0: its cone flattens onto the tangent plane, every sharp
-            // turn inside that plane has b ≈ n, and a straight asymptotic line (a ruling) has no
-            // osculating plane at all. Its limit is used instead, zero normal curvature along
-            // the step (Rodrigues: II(dx, dx) = −dn·dx): (n(P) − n_i)·(P − p_i) = 0, quadratic
-            // in t with n(P) interpolated along the edge like every point normal.
-            let normals = mesh.vertex_normals();
-            // Internal invariant: candidate edges are mesh edges.
-            let normal_change = |edge: [u32; 2], t: f64| normals[edge[0] as usize].lerp(&normals[edge[1] as usize], t) - normal;
-            let coefficients = |x0: &Vec3, x1: &Vec3, edge: [u32; 2]| {
-                let (a0, a1) = (normal_change(edge, 0.0), normal_change(edge, 1.0) - normal_change(edge, 0.0));
-                (a1.dot(x1), a0.dot(x1) + a1.dot(x0), a0.dot(x0))
-            };
-            let max_cos = tolerance.to_radians().sin();
-            let accept = |step: &Vec3, t: f64, edge: [u32; 2]| {
-                let change = normal_change(edge, t);
-                forward(step) && change.dot(step).abs() <= max_cos * change.norm() * step.norm()
-            };
-            best_solution(mesh, from.position, &candidates, min_step, coefficients, accept, |step| step.norm())
+            let limit = AsymptoticLimit { mesh, normal: &normal, tolerance };
+            let accept = |step: &Vec3, t: f64, edge: [u32; 2]| forward(step) && limit.accepts(step, t, edge);
+            nearest_solution(mesh, from.position, &candidates, min_step, |x0, x1, edge| limit.coefficients(x0, x1, edge), accept)
         } else {
             let coefficients = |x0: &Vec3, x1: &Vec3, _: [u32; 2]| cone_coefficients(&g.cross(x0), &g.cross(x1), &normal, cos);
             let accept = |step: &Vec3, _: f64, _: [u32; 2]| forward(step) && angle_within(&g, step, &normal, theta_degrees, tolerance);
-            best_solution(mesh, from.position, &candidates, min_step, coefficients, accept, |step| step.norm())
+            nearest_solution(mesh, from.position, &candidates, min_step, coefficients, accept)
         }
     };
     search(Reach::Near { vertex_ratio: options.vertex_ratio }).or_else(|| search(Reach::Wide))

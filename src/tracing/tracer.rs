@@ -132,10 +132,12 @@ impl<'a> Tracer<'a> {
     /// Whether `point` lies on the boundary: on a boundary edge, or exactly at a boundary vertex.
     fn on_boundary(&self, point: &EdgePoint) -> bool {
         let [a, b] = point.edge;
-        let at_vertex = match point.t {
-            t if t == 0.0 => Some(a),
-            t if t == 1.0 => Some(b),
-            _ => None,
+        let at_vertex = if point.t == 0.0 {
+            Some(a)
+        } else if point.t == 1.0 {
+            Some(b)
+        } else {
+            None
         };
         self.adjacency.is_boundary_edge(a, b) || at_vertex.is_some_and(|v| self.mesh.is_boundary_vertex(v as usize))
     }
