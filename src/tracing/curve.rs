@@ -18,8 +18,8 @@ pub enum StopReason {
 
 /// A discrete P-curve traced on a mesh (Sec. 3.2.1): a polyline whose points lie on mesh edges,
 /// from a start point on the boundary, in travel direction. Its side vector `u = n × t` points
-/// to the left of the travel direction seen against the normal; with that side vector its
-/// signed binormal angle (Sec. 3.1) is the traced θ.
+/// to the left of the travel direction, seen from the side the normal points to; with that side
+/// vector its signed binormal angle (Sec. 3.1) is the traced θ.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TracedCurve {
     points: Vec<EdgePoint>,

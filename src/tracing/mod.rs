@@ -4,9 +4,11 @@
 //! order checks that the level-set initialisation (Sec. 3.2.2) demands of its guide curves.
 //!
 //! Conventions (Sec. 3.1): a curve travels from its start point; its side vector
-//! `u = n × t` points to its left seen against the normal, and θ is the signed angle
-//! `acos(sign(b·u)·(b·n))` between its discrete binormal (Eq. 1) and the surface normal, so θ
-//! and 180° − θ are the two mirror families (Fig. 8, 9).
+//! `u = n × t` points to its left, seen from the side the normal points to, and θ is the signed
+//! angle `acos(sign(b·u)·(b·n))` between its discrete binormal (Eq. 1) and the surface normal,
+//! so θ and 180° − θ are the two mirror families (Fig. 8, 9). This is the convention of
+//! [`crate::field::LevelFrame`]: a field with the curve as a level set and its gradient
+//! pointing to the curve's left measures the same θ. Reversing a curve turns θ into 180° − θ.
 
 mod asymptotic;
 mod curve;

@@ -32,16 +32,21 @@ impl<'a> Tracer<'a> {
 
     /// Traces the discrete P-curve of angle `theta_degrees` (θ ∈ [0°, 180°] between binormal
     /// and surface normal, Eq. 2; θ and 180° − θ are the mirror families, 90° gives geodesics
-    /// and 0° asymptotic curves) from `start`, a point on a boundary edge.
+    /// and 0° or 180° asymptotic curves) from `start`, a point on a boundary edge (either
+    /// orientation of the edge).
     ///
-    /// The first segment leaves `start` under `start_angle_degrees` (α ∈ (0°, 180°)) against
-    /// the boundary tangent, measured inside the surface from the boundary direction that has
-    /// the interior on its left (α = 90°: perpendicular into the surface). Every further point
-    /// solves Eq. 4 on the edges of the triangle across the current edge (near a vertex: of
-    /// its one-ring), with the root of the family's signed angle, forward, farther than `d0`,
-    /// nearest. The first stop rule that applies ends the curve, checked in this order before
-    /// each step: the point is on the boundary, the length limit, the point limit; a step
-    /// without a valid candidate ends it as [`StopReason::NoValidCandidate`].
+    /// `start_angle_degrees` (α ∈ (0°, 180°)) fixes the curve's tangent at `start`: the angle
+    /// against the boundary direction that has the interior on its left, turned towards the
+    /// interior in the tangent plane (α = 90°: perpendicular into the surface). Every point,
+    /// the first included, solves Eq. 4 on the edges of the triangle across the current edge
+    /// (near a vertex also its one-ring; if nothing qualifies, the one-rings of both edge ends),
+    /// with the root of the family's signed angle, turning by less than
+    /// [`TraceOptions::max_turn_degrees`], farther than `d0`, nearest. Near θ = 0° or 180° the
+    /// degenerate Eq. 4 is replaced by its limit, zero normal curvature per step.
+    ///
+    /// Before each step the first stop rule that applies ends the curve, in this order: the
+    /// point is on the boundary, the length limit, the point limit; a step without a valid
+    /// candidate ends it as [`StopReason::NoValidCandidate`]. The curve has at least two points.
     pub fn trace(
         &self,
         start: &EdgePoint,
