@@ -27,7 +27,7 @@ fn catenary(theta: f64, apex: f64, up: bool, x_end: f64) -> Vec<(f64, f64)> {
 }
 
 fn trace_from_left(theta: f64, height: f64, alpha: f64) -> (lamella::mesh::TriMesh, TracedCurve) {
-    let mesh = cylinder(6000, 17);
+    let mesh = cylinder(3000, 17);
     let tracer = Tracer::new(&mesh);
     let start = left_side_point(&mesh, height);
     let curve = tracer.trace(&start, theta, alpha, &TraceOptions::default()).expect("valid input");
@@ -53,7 +53,9 @@ fn check_catenary(theta: f64, family_theta: f64, apex: f64, up: bool) {
     let length = length_2d(&developed);
     let distance = hausdorff(&developed, &analytic);
     eprintln!("theta {theta}: length {length}, Hausdorff {distance} ({} % of the length)", 100.0 * distance / length);
-    assert!(distance <= 0.01 * length, "Hausdorff {distance} vs length {length}");
+    // The brief asks for 1 %; the fitted start normal brings it to a few hundredths of a percent
+    // (with the one-sided boundary vertex normals instead it is about 1.1 %).
+    assert!(distance <= 0.002 * length, "Hausdorff {distance} vs length {length}");
 }
 
 #[test]
@@ -89,3 +91,4 @@ fn tracing_is_deterministic() {
     let (_, b) = trace_from_left(60.0, 2.0, 90.0);
     assert_eq!(a, b);
 }
+

@@ -25,7 +25,7 @@ fn crossing_mirror_curves_are_reported_where_the_catenaries_meet() {
     let x = (1.0 + 5.5 * k).acosh() / k;
     let (cx, cy) = development(&crossing.position);
     eprintln!("crossing at ({cx}, {cy}), analytic ({x}, 7.5)");
-    assert!((cx - x).abs() < 0.5 && (cy - 7.5).abs() < 0.3, "crossing at ({cx}, {cy}), expected ({x}, 7.5)");
+    assert!((cx - x).abs() < 0.1 && (cy - 7.5).abs() < 0.1, "crossing at ({cx}, {cy}), expected ({x}, 7.5)");
     // The reported segments really contain the crossing point.
     for (curve, segment) in [(&rising, crossing.segments[0]), (&falling, crossing.segments[1])] {
         let p = curve.positions();

@@ -6,10 +6,12 @@
 //! The first segment is then found like every other, by Eq. 4 with `t_0` as incoming
 //! direction, so the start point already obeys the P-curve condition. Shooting the first
 //! segment straight along `t_0` instead (the authors' code) leaves its chord tilted out of the
-//! tangent plane, and that tilt turns into a persistent error of the curve's direction.
+//! tangent plane, and that tilt turns into a persistent error of the curve's direction; for the
+//! same reason the tangent plane at the start comes from a quadratic fit ([`start_normal`])
+//! rather than from the one-sided boundary vertex normals.
 
 use super::edge_search::Found;
-use super::normal::point_normal;
+use super::start_normal::start_normal;
 use super::step::{next_point, StepFrom};
 use super::TraceOptions;
 use crate::mesh::{EdgeFaces, EdgePoint, TriMesh, Vec3};
@@ -27,7 +29,7 @@ pub(crate) fn first_segment(
     theta_degrees: f64,
     options: &TraceOptions,
 ) -> Option<Found> {
-    let normal = point_normal(mesh, start)?;
+    let normal = start_normal(mesh, start, s)?;
     let along = (r - normal * r.dot(&normal)).try_normalize(0.0)?;
     let inward = normal.cross(&along);
     let (sin, cos) = alpha_degrees.to_radians().sin_cos();

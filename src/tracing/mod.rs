@@ -22,6 +22,7 @@ mod options;
 mod order;
 mod quadratic;
 mod seeding;
+mod start_normal;
 mod step;
 mod tracer;
 
