@@ -49,8 +49,8 @@ fn fitted_normal(mesh: &TriMesh, start: &EdgePoint, position: &Vec3, rough: &Vec
         heights[row] = d.dot(rough);
     }
     let svd = design.svd(true, true);
-    let largest = svd.singular_values.max();
-    if !(svd.singular_values.min() > CONDITION * largest) {
+    let well_posed = svd.singular_values.min() > CONDITION * svd.singular_values.max();
+    if !well_posed {
         return None;
     }
     let coefficients = svd.solve(&heights, 0.0).ok()?;
