@@ -1,7 +1,7 @@
 //! The search of every step (the first segment included): on each candidate edge
-//! `P(t) = (1 − t)·v_s + t·v_e`, solve a cone equation (quadratic in `t`), keep the roots that
-//! lie on the edge, are farther than `d0` and pass the caller's test, and take the nearest
-//! (Sec. 3.2.1).
+//! `P(t) = (1 − t)·v_s + t·v_e`, solve the step's equation (quadratic in `t`: the cone of Eq. 4
+//! or its asymptotic limit), keep the roots that lie on the edge, are farther than `d0` and pass
+//! the caller's test, and take the nearest (Sec. 3.2.1).
 
 use super::neighbourhood::CandidateEdge;
 use super::quadratic::candidate_parameters;
@@ -31,7 +31,7 @@ pub(crate) fn cone_coefficients(x0: &Vec3, x1: &Vec3, axis: &Vec3, cos: f64) -> 
     )
 }
 
-/// The best point on the `candidates` that solves the equation whose coefficients
+/// The point on the `candidates` that solves the equation whose coefficients
 /// `coefficients(v_s − from, v_e − v_s, [s, e])` gives, lies farther than `min_step` (`d0`) from `from`,
 /// and passes `accept(P − from, t, [s, e])`: the nearest such point, ties keeping the earlier
 /// candidate. On a boundary edge any positive distance will do: `d0` protects the osculating

@@ -72,7 +72,7 @@ pub(crate) fn next_point(
 /// binormal angle θ (Sec. 3.1, measured as [`LevelFrame::signed_angle_degrees`] with the tangent
 /// of Eq. 1 and the side vector `u = n × t`) within `tolerance` degrees. The angle is defined
 /// modulo 180° (`b ~ −b`), so θ = 0 and θ = 180 both mean asymptotic.
-pub(crate) fn angle_within(incoming: &Vec3, outgoing: &Vec3, normal: &Vec3, theta_degrees: f64, tolerance: f64) -> bool {
+fn angle_within(incoming: &Vec3, outgoing: &Vec3, normal: &Vec3, theta_degrees: f64, tolerance: f64) -> bool {
     let (e_in, e_out) = (incoming.normalize(), outgoing.normalize());
     let cross = e_in.cross(&e_out);
     if cross.norm() < STRAIGHT {

@@ -41,8 +41,9 @@ impl<'a> Tracer<'a> {
     /// the first included, solves Eq. 4 on the edges of the triangle across the current edge
     /// (near a vertex also its one-ring; if nothing qualifies, the one-rings of both edge ends),
     /// with the root of the family's signed angle, turning by less than
-    /// [`TraceOptions::max_turn_degrees`], farther than `d0`, nearest. Near θ = 0° or 180° the
-    /// degenerate Eq. 4 is replaced by its limit, zero normal curvature per step.
+    /// [`TraceOptions::max_turn_degrees`], farther than `d0`, nearest. For θ within the angle
+    /// tolerance of 0° or 180° the degenerate Eq. 4 is replaced by its limit, zero normal
+    /// curvature per step.
     ///
     /// Before each step the first stop rule that applies ends the curve, in this order: the
     /// point is on the boundary, the length limit, the point limit; a step without a valid
