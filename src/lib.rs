@@ -1,8 +1,9 @@
 //! Lamella: rectifying strip patterns (Wang, Wang, Schling, Pottmann, SIGGRAPH Asia 2023).
 //!
-//! The pipeline, one module per stage: a validated triangle [`mesh`]; a scalar [`field`] whose
-//! level sets are pseudo-geodesics, optimised by the sparse Levenberg–Marquardt [`solver`] from
-//! an [`initialisation`] (guide curves or sketched strokes, and the automatic design);
+//! The pipeline, one module per stage: a validated triangle [`mesh`]; guide curves [`tracing`]
+//! on it (Sec. 3.2.1); a scalar [`field`] whose level sets are pseudo-geodesics, optimised by
+//! the sparse Levenberg–Marquardt [`solver`] from an [`initialisation`] (guide curves or
+//! sketched strokes, and the automatic design);
 //! its level [`curves`]; the rectifying developable [`strips`] along them with their flat
 //! unrollings; the C ABI in [`ffi`]; procedural [`surfaces`] for tests and the demo.
 pub mod curves;
@@ -13,3 +14,4 @@ pub mod mesh;
 pub mod solver;
 pub mod strips;
 pub mod surfaces;
+pub mod tracing;

@@ -1,8 +1,9 @@
 //! The triangle mesh: a validated, immutable [`TriMesh`] (a topological disk, possibly with
 //! holes, paper Sec. 7) with the differential-geometry data the level-set optimiser needs:
 //! normals, mixed Voronoi areas, ordered vertex stars (Fig. 7), per-face gradient operators,
-//! boundary loops, and unit scaling.
+//! boundary loops, edge → face adjacency, and unit scaling.
 
+mod edge_faces;
 mod edge_point;
 mod error;
 mod gradient;
@@ -17,6 +18,7 @@ mod union_find;
 mod validation;
 mod voronoi_area;
 
+pub use edge_faces::EdgeFaces;
 pub use edge_point::EdgePoint;
 pub use error::MeshError;
 pub use star::VertexStar;
