@@ -4,9 +4,9 @@
 use super::darboux::{level_frame, LevelFrame};
 use super::error::FieldError;
 use super::gradient_norm::mean_gradient_norm;
-use super::params::{Family, FieldParams, Weights, SETTLING_ITERATIONS};
+use super::params::{Family, FieldParams, Weights, SETTLED_CURVE_ENERGY, SETTLING_ITERATIONS};
 use super::problem::FieldProblem;
-use super::report::StepReport;
+use super::report::{curve_energy, StepReport};
 use crate::mesh::{TriMesh, Vec3};
 use crate::solver::{LeastSquaresProblem, LevenbergMarquardt};
 use rayon::prelude::*;
@@ -102,7 +102,7 @@ impl FieldSolver {
             let settled = outcome.converged.is_some() || !outcome.accepted || self.slow_iterations >= SETTLING_ITERATIONS;
             let final_stage = self.stage == self.params.schedule.len();
             if final_stage {
-                self.converged = settled;
+                self.converged = settled || curve_energy(&self.problem, &self.x) <= SETTLED_CURVE_ENERGY;
             } else if settled || self.stage_iterations >= self.params.schedule[self.stage].iterations {
                 self.enter_stage(self.stage + 1);
             }

@@ -138,14 +138,19 @@ impl FieldProblem {
     }
 
     pub(crate) fn block(&self, b: usize) -> Block {
-        let (n, m) = (self.mesh.vertex_count(), self.mesh.face_count());
+        let n = self.mesh.vertex_count();
         if b < n {
             Block::Fair(b)
-        } else if b < n + m {
+        } else if b < self.first_curve_block() {
             Block::Grad(b - n)
         } else {
-            Block::Curve(b - n - m)
+            Block::Curve(b - self.first_curve_block())
         }
+    }
+
+    /// Index of the first curve block (blocks are ordered fairness, gradient, curve).
+    pub(crate) fn first_curve_block(&self) -> usize {
+        self.mesh.vertex_count() + self.mesh.face_count()
     }
 
     /// Evaluates block `b` with the given weights (the solver uses the problem's own; reports use 1).

@@ -100,24 +100,9 @@ fn angle_error(family: Family, measured: f64, theta: f64) -> f64 {
 }
 
 fn energies(problem: &FieldProblem, x: &[f64]) -> Energies {
-    let unit = Weights { fair: 1.0, grad: 1.0, angle: 1.0 };
     let w = problem.weights();
-    // Per-block squared norms in parallel, summed in block order (as the serial loop would).
-    let squares: Vec<(f64, f64)> = (0..problem.block_count())
-        .into_par_iter()
-        .map_init(Vec::new, |residuals, b| {
-            residuals.clear();
-            residuals.resize(problem.block_residual_count(b), 0.0);
-            problem.evaluate_weighted(b, &unit, x, residuals, None);
-            let squares = |r: &[f64]| r.iter().map(|v| v * v).sum::<f64>();
-            match (problem.block(b), problem.family()) {
-                (Block::Curve(_), Family::PseudoGeodesic { .. }) => (squares(&residuals[..2]), squares(&residuals[2..])),
-                _ => (squares(residuals), 0.0),
-            }
-        })
-        .collect();
     let mut e = Energies::default();
-    for (b, &(first, rest)) in squares.iter().enumerate() {
+    for (b, (first, rest)) in block_squares(problem, x, 0..problem.block_count()).into_iter().enumerate() {
         match problem.block(b) {
             Block::Fair(_) => e.fair += first,
             Block::Grad(_) => e.grad += first,
@@ -129,4 +114,31 @@ fn energies(problem: &FieldProblem, x: &[f64]) -> Energies {
     }
     e.total = w.fair * e.fair + w.grad * e.grad + w.angle * (e.angle + e.frame);
     e
+}
+
+/// The unweighted curve terms `E_angle + E_frame` (or `E_geo`, `E_asy`) of `x`: the part of
+/// [`Energies`] that says whether the level sets already form the family.
+pub(crate) fn curve_energy(problem: &FieldProblem, x: &[f64]) -> f64 {
+    let curves = problem.first_curve_block()..problem.block_count();
+    block_squares(problem, x, curves).into_iter().map(|(first, rest)| first + rest).sum()
+}
+
+/// Squared residual norms of `blocks` with unit weights, split for pseudo-geodesic curve blocks
+/// into the angle rows (Eq. 8) and the frame rows (Eq. 9–10). Evaluated in parallel, returned in
+/// block order so that sums do not depend on the threads.
+fn block_squares(problem: &FieldProblem, x: &[f64], blocks: std::ops::Range<usize>) -> Vec<(f64, f64)> {
+    let unit = Weights { fair: 1.0, grad: 1.0, angle: 1.0 };
+    blocks
+        .into_par_iter()
+        .map_init(Vec::new, |residuals, b| {
+            residuals.clear();
+            residuals.resize(problem.block_residual_count(b), 0.0);
+            problem.evaluate_weighted(b, &unit, x, residuals, None);
+            let squares = |r: &[f64]| r.iter().map(|v| v * v).sum::<f64>();
+            match (problem.block(b), problem.family()) {
+                (Block::Curve(_), Family::PseudoGeodesic { .. }) => (squares(&residuals[..2]), squares(&residuals[2..])),
+                _ => (squares(residuals), 0.0),
+            }
+        })
+        .collect()
 }
