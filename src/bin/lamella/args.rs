@@ -23,6 +23,10 @@ pub enum Command {
     /// Mesh validation report: counts, boundary loops, disk or not, bounding box, mean edge
     /// length and every problem found.
     Info(InfoArgs),
+    /// Trace guide P-curves (paper Sec. 3.2.1, Eq. 4) from evenly spaced points of one side of the
+    /// boundary. Writes guides.json (for `field --guides-file` / `design --guides-file`),
+    /// guides.obj and report.json (lengths, why each curve stopped, crossings).
+    Trace(TraceArgs),
     /// Optimise the scalar field whose level sets are the pseudo-geodesics, or continue a saved
     /// session (--resume). Writes field.csv, session.bin, energies.csv, convergence.svg, report.json.
     Field(FieldArgs),
@@ -79,6 +83,43 @@ pub struct FieldFlags {
     pub max_iterations: Option<usize>,
 }
 
+/// Where the field optimisation starts (paper Sec. 3.2.2). At most one of these; without any,
+/// the coordinate along the longest bounding-box axis.
+#[derive(Args, Debug, Clone, Default)]
+pub struct StartFlags {
+    /// Trace this many guide P-curves of angle θ from one side of the boundary (see
+    /// --guide-side, --guide-angle) and start from the field that takes the value i on guide i
+    /// (Eq. 5–7), 2 to 100 [default: none].
+    #[arg(long, value_name = "N", conflicts_with_all = ["guides_file", "strokes"])]
+    pub guides: Option<usize>,
+    /// Start from the guide curves in a guides.json written by `lamella trace` (traced on the same
+    /// mesh) [default: none].
+    #[arg(long, value_name = "guides.json", conflicts_with = "strokes")]
+    pub guides_file: Option<PathBuf>,
+    /// Start from sketched strokes: a JSON file {"strokes": [[[x, y, z], ...], ...]} of at least two
+    /// polylines drawn on (within one mean edge length of) the surface, in metres. The level sets
+    /// are fitted to them and θ is estimated from them unless --theta is given (Fig. 14)
+    /// [default: none].
+    #[arg(long, value_name = "S.json")]
+    pub strokes: Option<PathBuf>,
+    #[command(flatten)]
+    pub seeding: GuideSeedingFlags,
+}
+
+/// Where guide curves start (for --guides and `lamella trace`).
+#[derive(Args, Debug, Clone, Default)]
+pub struct GuideSeedingFlags {
+    /// The side of the outer boundary the guides start from: the boundary split at corners
+    /// (turns of 30° or more) into sides numbered from 0 along the boundary; 'longest' picks the
+    /// longest side [default: longest].
+    #[arg(long, value_name = "K|longest")]
+    pub guide_side: Option<String>,
+    /// Angle between each guide's first segment and the boundary, in degrees, 0 to 180 exclusive
+    /// (90 = perpendicular) [default: 90].
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
+    pub guide_angle: Option<f64>,
+}
+
 /// Parameters of the strips.
 #[derive(Args, Debug, Clone, Default)]
 pub struct StripFlags {
@@ -93,8 +134,9 @@ pub struct StripFlags {
 /// Parameters from a TOML file.
 #[derive(Args, Debug, Clone, Default)]
 pub struct ConfigArgs {
-    /// TOML file with any of: mesh, out, theta, max_iterations, strips, width (same meanings and
-    /// units as the flags; a flag wins over the file) [default: none].
+    /// TOML file with any of: mesh, out, theta, max_iterations, strips, width, guides,
+    /// guides_file, strokes, guide_side, guide_angle (same meanings and units as the flags; a flag
+    /// wins over the file) [default: none].
     #[arg(long, value_name = "design.toml")]
     pub config: Option<PathBuf>,
 }
@@ -105,6 +147,8 @@ pub struct DesignArgs {
     pub mesh: MeshArgs,
     #[command(flatten)]
     pub field: FieldFlags,
+    #[command(flatten)]
+    pub start: StartFlags,
     #[command(flatten)]
     pub strips: StripFlags,
     #[command(flatten)]
@@ -123,16 +167,39 @@ pub struct InfoArgs {
 }
 
 #[derive(Args, Debug, Clone, Default)]
+pub struct TraceArgs {
+    #[command(flatten)]
+    pub mesh: MeshArgs,
+    /// Target angle θ between the guides' binormals and the surface normal, in degrees, 0 to 180
+    /// (90 = geodesics, 0 = asymptotic curves) [default: 60].
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
+    pub theta: Option<f64>,
+    /// Number of guide curves, 1 to 100 [default: 4].
+    #[arg(long, value_name = "N")]
+    pub guides: Option<usize>,
+    #[command(flatten)]
+    pub seeding: GuideSeedingFlags,
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub config: ConfigArgs,
+    #[command(flatten)]
+    pub verbosity: VerbosityArgs,
+}
+
+#[derive(Args, Debug, Clone, Default)]
 pub struct FieldArgs {
     #[command(flatten)]
     pub mesh: MeshArgs,
     #[command(flatten)]
     pub field: FieldFlags,
+    #[command(flatten)]
+    pub start: StartFlags,
     /// Continue the saved session (session.bin of an earlier `field` or `design` run) up to
     /// --max-iterations in total; its mesh and θ are used, and energies.csv beside it extends
     /// the history [default: start a new optimisation from the coordinate along the longest
     /// bounding-box axis].
-    #[arg(long, value_name = "session.bin", conflicts_with_all = ["mesh", "theta"])]
+    #[arg(long, value_name = "session.bin", conflicts_with_all = ["mesh", "theta", "guides", "guides_file", "strokes"])]
     pub resume: Option<PathBuf>,
     #[command(flatten)]
     pub out: OutArgs,

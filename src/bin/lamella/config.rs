@@ -1,6 +1,6 @@
 //! The design parameters in force: flags over a `--config` TOML file over the defaults, checked
 //! against their ranges.
-use crate::args::{ConfigArgs, FieldFlags, MeshArgs, OutArgs, StripFlags};
+use crate::args::{ConfigArgs, FieldFlags, GuideSeedingFlags, MeshArgs, OutArgs, StartFlags, StripFlags};
 use crate::error::{CliError, CliResult};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
@@ -9,8 +9,10 @@ pub const DEFAULT_THETA: f64 = 60.0;
 pub const DEFAULT_MAX_ITERATIONS: usize = 400;
 pub const DEFAULT_STRIPS: usize = 20;
 pub const DEFAULT_OUT: &str = "lamella-out";
+pub const DEFAULT_GUIDE_ANGLE: f64 = 90.0;
 const MAX_ITERATIONS_LIMIT: usize = 100_000;
 const MAX_STRIPS: usize = 1000;
+const MAX_GUIDES: usize = 100;
 
 /// The keys a `design.toml` may set (all optional, same units as the flags).
 #[derive(Deserialize, Default, Debug)]
@@ -22,6 +24,31 @@ struct ConfigFile {
     max_iterations: Option<usize>,
     strips: Option<usize>,
     width: Option<f64>,
+    guides: Option<usize>,
+    guides_file: Option<PathBuf>,
+    strokes: Option<PathBuf>,
+    guide_side: Option<String>,
+    guide_angle: Option<f64>,
+}
+
+/// Where the field optimisation starts (paper Sec. 3.2.2).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Start {
+    /// The coordinate along the longest bounding-box axis.
+    Axis,
+    /// This many guide P-curves traced from the boundary (Sec. 3.2.1).
+    Guides(usize),
+    /// Guide curves saved by `lamella trace`.
+    GuidesFile(PathBuf),
+    /// Sketched strokes (Fig. 14).
+    Strokes(PathBuf),
+}
+
+/// The boundary side guides start from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum GuideSide {
+    Longest,
+    Index(usize),
 }
 
 /// Every parameter of a run, resolved and range-checked.
@@ -33,6 +60,12 @@ pub struct Settings {
     pub force: bool,
     /// Target angle θ in degrees.
     pub theta: f64,
+    /// Whether θ was given (flag or file) rather than defaulted; strokes estimate θ otherwise.
+    pub theta_given: bool,
+    pub start: Start,
+    pub guide_side: GuideSide,
+    /// Angle of the guides' first segments against the boundary, degrees.
+    pub guide_angle: f64,
     pub max_iterations: usize,
     pub strips: usize,
     /// Strip width in mesh units; `None`: half the mean spacing of the level curves.
@@ -47,6 +80,7 @@ pub struct Flags<'a> {
     pub field: Option<&'a FieldFlags>,
     pub strips: Option<&'a StripFlags>,
     pub config: Option<&'a ConfigArgs>,
+    pub start: Option<&'a StartFlags>,
 }
 
 impl Settings {
@@ -55,11 +89,21 @@ impl Settings {
             Some(path) => read_config(path)?,
             None => ConfigFile::default(),
         };
+        let theta = flags.field.and_then(|f| f.theta).or(file.theta);
+        let seeding = flags.start.map(|s| &s.seeding);
+        let guide_side = match seeding.and_then(|s| s.guide_side.clone()).or(file.guide_side.clone()) {
+            Some(text) => parse_guide_side(&text)?,
+            None => GuideSide::Longest,
+        };
         let settings = Settings {
+            theta_given: theta.is_some(),
+            start: resolve_start(flags.start, &file)?,
+            guide_side,
+            guide_angle: seeding.and_then(|s: &GuideSeedingFlags| s.guide_angle).or(file.guide_angle).unwrap_or(DEFAULT_GUIDE_ANGLE),
             mesh: flags.mesh.and_then(|m| m.mesh.clone()).or(file.mesh),
             out: flags.out.and_then(|o| o.out.clone()).or(file.out).unwrap_or_else(|| PathBuf::from(DEFAULT_OUT)),
             force: flags.out.is_some_and(|o| o.force),
-            theta: flags.field.and_then(|f| f.theta).or(file.theta).unwrap_or(DEFAULT_THETA),
+            theta: theta.unwrap_or(DEFAULT_THETA),
             max_iterations: flags
                 .field
                 .and_then(|f| f.max_iterations)
@@ -80,6 +124,14 @@ impl Settings {
         if !(1..=MAX_STRIPS).contains(&self.strips) {
             return Err(out_of_range("strips", self.strips, &format!("1 to {MAX_STRIPS}")));
         }
+        if let Start::Guides(count) = self.start {
+            if !(1..=MAX_GUIDES).contains(&count) {
+                return Err(out_of_range("guides", count, &format!("1 to {MAX_GUIDES}")));
+            }
+        }
+        if !(self.guide_angle.is_finite() && self.guide_angle > 0.0 && self.guide_angle < 180.0) {
+            return Err(out_of_range("guide-angle", self.guide_angle, "between 0 and 180 degrees, exclusive"));
+        }
         if let Some(width) = self.width {
             if !(width.is_finite() && width > 0.0) {
                 return Err(out_of_range("width", width, "a finite length > 0 m"));
@@ -87,6 +139,31 @@ impl Settings {
         }
         Ok(())
     }
+}
+
+/// The start flags win as a group over the file's start keys; at most one start may be given.
+fn resolve_start(flags: Option<&StartFlags>, file: &ConfigFile) -> CliResult<Start> {
+    let from_flags = flags.map(|f| (f.guides, f.guides_file.clone(), f.strokes.clone()));
+    let (guides, guides_file, strokes) = match from_flags {
+        Some(choice) if choice != (None, None, None) => choice,
+        _ => (file.guides, file.guides_file.clone(), file.strokes.clone()),
+    };
+    match (guides, guides_file, strokes) {
+        (None, None, None) => Ok(Start::Axis),
+        (Some(count), None, None) => Ok(Start::Guides(count)),
+        (None, Some(path), None) => Ok(Start::GuidesFile(path)),
+        (None, None, Some(path)) => Ok(Start::Strokes(path)),
+        _ => Err(CliError::bad_input("give at most one of guides, guides_file and strokes")),
+    }
+}
+
+fn parse_guide_side(text: &str) -> CliResult<GuideSide> {
+    if text == "longest" {
+        return Ok(GuideSide::Longest);
+    }
+    text.parse::<usize>()
+        .map(GuideSide::Index)
+        .map_err(|_| CliError::bad_input(format!("parameter --guide-side = {text} is not a side number or 'longest'")))
 }
 
 /// θ must lie in [0°, 180°].

@@ -4,12 +4,13 @@
 use crate::args::DesignArgs;
 use crate::config::{Flags, Settings};
 use crate::error::{CliError, CliResult};
-use crate::field_cmd::{field_summary, initial_field, new_solver, optimise, write_field_files};
+use crate::field_cmd::{field_summary, new_solver, optimise, write_field_files};
 use crate::field_files::HistoryRow;
 use crate::mesh_input::{load_mesh, mesh_name};
 use crate::output_dir::OutputDir;
 use crate::progress::{note, summary, Verbosity};
 use crate::report_json::{self, Timings};
+use crate::start_field::start_field;
 use crate::strip_obj::strip_name;
 use crate::strips_cmd::{build_strips, strips_summary, warning_lines, write_strip_files};
 use crate::svg::cut_sheet::{cut_sheet_svg, CutPiece};
@@ -24,22 +25,25 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
         field: Some(&args.field),
         strips: Some(&args.strips),
         config: Some(&args.config),
+        start: Some(&args.start),
     })?;
     let mesh = load_mesh(settings.mesh.as_deref())?;
     let name = mesh_name(settings.mesh.as_deref());
     let out = OutputDir::create(&settings.out, settings.force)?;
+    let start = start_field(&mesh, &settings)?;
+    let theta = start.theta;
     note(
         verbosity,
-        &format!("{name}: {} vertices, {} triangles; θ = {}°, {} strips", mesh.vertex_count(), mesh.face_count(), settings.theta, settings.strips),
+        &format!("{name}: {} vertices, {} triangles; θ = {theta}°, {} strips", mesh.vertex_count(), mesh.face_count(), settings.strips),
     );
 
-    let mut solver = new_solver(&mesh, &initial_field(&mesh), settings.theta)?;
+    let mut solver = new_solver(&mesh, &start)?;
     let mut history = vec![HistoryRow::of(solver.report())];
     optimise(&mut solver, settings.max_iterations, &mut history, verbosity)?;
     let field_seconds = started.elapsed().as_secs_f64();
 
     let strips_started = Instant::now();
-    let run = build_strips(&mesh, &solver.field(), settings.theta, settings.strips, settings.width)?;
+    let run = build_strips(&mesh, &solver.field(), theta, settings.strips, settings.width)?;
     let strips_seconds = strips_started.elapsed().as_secs_f64();
     if verbosity == Verbosity::Verbose {
         warning_lines(&run).iter().for_each(|w| eprintln!("{w}"));
@@ -54,7 +58,7 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
         run.pattern.strips.iter().enumerate().map(|(id, s)| CutPiece { name: strip_name(id), unrolling: &s.unrolling }).collect();
     out.write("unrolled.svg", cut_sheet_svg(&pieces))?;
     let timings = Timings { field: field_seconds, strips: strips_seconds, total: started.elapsed().as_secs_f64() };
-    let parameters = report_json::parameters(&settings, settings.theta, &name);
+    let parameters = report_json::parameters(&settings, theta, &name, Some(&start.description));
     out.write("report.json", report_json::document(&parameters, Some((&solver, &history)), Some(&run), &timings))?;
     let target = out.target().display().to_string();
     out.commit()?;

@@ -8,23 +8,17 @@ use crate::mesh_input::{load_mesh, mesh_name};
 use crate::output_dir::OutputDir;
 use crate::progress::{note, summary, Progress, Verbosity};
 use crate::report_json::{self, Timings};
+use crate::start_field::{start_field, StartField};
 use crate::svg::convergence::convergence_svg;
 use lamella::field::{FieldError, FieldParams, FieldSolver};
 use lamella::mesh::TriMesh;
 use std::time::Instant;
 
-/// The default initial field: the coordinate along the longest axis of the bounding box (on the
-/// hall roof, x: its level sets are the arches across the hall).
-pub fn initial_field(mesh: &TriMesh) -> Vec<f64> {
-    let (low, high) = mesh.bounding_box();
-    let extent = high - low;
-    let axis = extent.iamax();
-    mesh.positions().iter().map(|p| p[axis]).collect()
-}
-
-/// A new pseudo-geodesic field optimisation from `initial` with the default schedule.
-pub fn new_solver(mesh: &TriMesh, initial: &[f64], theta: f64) -> CliResult<FieldSolver> {
-    FieldSolver::new(mesh, initial, FieldParams::pseudo_geodesic(theta)).map_err(field_error)
+/// A new pseudo-geodesic field optimisation from `start` with the default schedule.
+pub fn new_solver(mesh: &TriMesh, start: &StartField) -> CliResult<FieldSolver> {
+    let mut params = FieldParams::pseudo_geodesic(start.theta);
+    params.gradient_target = start.gradient_target;
+    FieldSolver::new(mesh, &start.values, params).map_err(field_error)
 }
 
 /// Runs iterations one at a time until convergence or `max_iterations` in total, appending
@@ -53,10 +47,14 @@ pub fn field_error(error: FieldError) -> CliError {
     }
 }
 
-/// One-line description of the field's state.
+/// Largest measured angle error (degrees) a field may keep without a warning.
+const ANGLE_ERROR_WARNING_DEGREES: f64 = 1.0;
+
+/// Description of the field's state: one line, and a warning line when the level curves miss θ
+/// somewhere by more than a degree.
 pub fn field_summary(solver: &FieldSolver) -> String {
     let r = solver.report();
-    format!(
+    let mut text = format!(
         "field {} after {} iterations: E_angle {:.2e}, angle error max {:.3}° (RMS {:.3}°), {} singular vertices",
         if r.converged { "converged" } else { "stopped" },
         r.iterations,
@@ -64,7 +62,14 @@ pub fn field_summary(solver: &FieldSolver) -> String {
         r.angle_error_max_degrees,
         r.angle_error_rms_degrees,
         r.singular_vertices.len()
-    )
+    );
+    if r.angle_error_max_degrees > ANGLE_ERROR_WARNING_DEGREES {
+        text.push_str(&format!(
+            "\nwarning: the level curves miss θ by up to {:.1}° somewhere: no θ family covers the surface from this start; try another start (--guides with another --guide-angle or --guide-side, --strokes)",
+            r.angle_error_max_degrees
+        ));
+    }
+    text
 }
 
 /// Writes the field's files: field.csv, session.bin, energies.csv, convergence.svg.
@@ -84,7 +89,9 @@ pub fn run(args: &FieldArgs) -> CliResult<()> {
         field: Some(&args.field),
         config: Some(&args.config),
         strips: None,
+        start: Some(&args.start),
     })?;
+    let mut start_description = None;
     let (mut solver, mut history, source) = match &args.resume {
         Some(path) => {
             let bytes = std::fs::read(path).map_err(|e| CliError::bad_input(format!("cannot read {}: {e}", path.display())))?;
@@ -97,7 +104,9 @@ pub fn run(args: &FieldArgs) -> CliResult<()> {
         }
         None => {
             let mesh = load_mesh(settings.mesh.as_deref())?;
-            let solver = new_solver(&mesh, &initial_field(&mesh), settings.theta)?;
+            let start = start_field(&mesh, &settings)?;
+            let solver = new_solver(&mesh, &start)?;
+            start_description = Some(start.description);
             let history = vec![HistoryRow::of(solver.report())];
             (solver, history, mesh_name(settings.mesh.as_deref()))
         }
@@ -110,7 +119,8 @@ pub fn run(args: &FieldArgs) -> CliResult<()> {
     let field_seconds = field_started.elapsed().as_secs_f64();
     write_field_files(&out, &solver, &history)?;
     let timings = Timings { field: field_seconds, strips: 0.0, total: started.elapsed().as_secs_f64() };
-    let report = report_json::document(&report_json::parameters(&settings, theta, &source), Some((&solver, &history)), None, &timings);
+    let parameters = report_json::parameters(&settings, theta, &source, start_description.as_ref());
+    let report = report_json::document(&parameters, Some((&solver, &history)), None, &timings);
     out.write("report.json", report)?;
     let target = out.target().display().to_string();
     out.commit()?;

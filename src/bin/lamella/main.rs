@@ -9,15 +9,19 @@ mod design;
 mod error;
 mod field_cmd;
 mod field_files;
+mod guides;
 mod info;
 mod mesh_input;
 mod metrics;
 mod output_dir;
 mod progress;
 mod report_json;
+mod start_field;
 mod strip_obj;
 mod strips_cmd;
+mod strokes_file;
 mod svg;
+mod trace_cmd;
 mod unroll;
 
 use args::{Cli, Command};
@@ -42,6 +46,7 @@ fn run(cli: &Cli) -> CliResult<()> {
         None => design::run(&cli.design),
         Some(Command::Design(args)) => design::run(args),
         Some(Command::Info(args)) => info::run(args),
+        Some(Command::Trace(args)) => trace_cmd::run(args),
         Some(Command::Field(args)) => field_cmd::run(args),
         Some(Command::Strips(args)) => strips_cmd::run(args),
         Some(Command::Unroll(args)) => unroll::run(args),

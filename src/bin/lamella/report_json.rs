@@ -14,14 +14,15 @@ pub struct Timings {
     pub total: f64,
 }
 
-/// The parameters in force.
-pub fn parameters(settings: &Settings, theta: f64, mesh: &str) -> Value {
+/// The parameters in force, and how the field started (when a field was made).
+pub fn parameters(settings: &Settings, theta: f64, mesh: &str, start: Option<&Value>) -> Value {
     json!({
         "mesh": mesh,
         "theta_degrees": theta,
         "max_iterations": settings.max_iterations,
         "strips": settings.strips,
         "width_m": settings.width,
+        "start": start,
     })
 }
 

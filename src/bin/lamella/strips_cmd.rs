@@ -135,6 +135,7 @@ pub fn run(args: &StripsArgs) -> CliResult<()> {
         field: Some(&field_flags),
         strips: Some(&args.strips),
         config: Some(&args.config),
+        start: None,
     })?;
     let mesh = load_mesh(settings.mesh.as_deref())?;
     let field = read_field_for(&mesh, &args.field_csv)?;
@@ -147,7 +148,7 @@ pub fn run(args: &StripsArgs) -> CliResult<()> {
     let strips_seconds = started.elapsed().as_secs_f64();
     write_strip_files(&out, &mesh, &run)?;
     let timings = Timings { field: 0.0, strips: strips_seconds, total: started.elapsed().as_secs_f64() };
-    let parameters = report_json::parameters(&settings, settings.theta, &mesh_name(settings.mesh.as_deref()));
+    let parameters = report_json::parameters(&settings, settings.theta, &mesh_name(settings.mesh.as_deref()), None);
     out.write("report.json", report_json::document(&parameters, None, Some(&run), &timings))?;
     let target = out.target().display().to_string();
     out.commit()?;

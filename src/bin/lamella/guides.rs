@@ -1,0 +1,168 @@
+//! Guide curves (paper Sec. 3.2.1): traced from evenly spaced points of one side of the outer
+//! boundary, written to and read from guides.json (the file `lamella trace` hands to `field` and
+//! `design`), and drawn as guides.obj.
+use crate::config::GuideSide;
+use crate::error::{CliError, CliResult};
+use lamella::mesh::{EdgePoint, TriMesh};
+use lamella::tracing::{
+    boundary_segments, evenly_spaced_starts, intersections, IntersectionReport, StopReason, TraceOptions, TracedCurve, Tracer,
+    DEFAULT_CORNER_TURN_DEGREES,
+};
+use serde::{Deserialize, Serialize};
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Traced guides with how they were made.
+pub struct Guides {
+    pub curves: Vec<TracedCurve>,
+    /// The boundary side they start from (index among the sides of the outer loop).
+    pub side: usize,
+    pub theta: f64,
+    pub start_angle: f64,
+}
+
+/// Traces `count` P-curves of angle `theta` from evenly spaced points of a side of the outer
+/// boundary, leaving it at `start_angle`.
+///
+/// A curve's side vector `u = n × t` (Sec. 3.1) points to its left. The boundary runs with the
+/// surface on its left, so a curve leaving it into the surface has its left against the
+/// boundary's direction: the guides are numbered against the order of their starts along the
+/// loop, so that the field with value i on guide i grows to each curve's left and its family
+/// has the signed angle θ (not 180° − θ).
+pub fn trace_guides(mesh: &TriMesh, count: usize, side: GuideSide, start_angle: f64, theta: f64) -> CliResult<Guides> {
+    let segments = boundary_segments(mesh, 0, DEFAULT_CORNER_TURN_DEGREES).map_err(|e| CliError::bad_input(format!("guides: {e}")))?;
+    let side = match side {
+        GuideSide::Index(k) => k,
+        GuideSide::Longest => longest_side(mesh, segments.iter().map(|s| s.vertices())),
+    };
+    let starts = evenly_spaced_starts(mesh, &segments, side, count).map_err(|e| CliError::bad_input(format!("--guide-side {side}: {e}")))?;
+    let tracer = Tracer::new(mesh);
+    let curves = starts
+        .iter()
+        .rev()
+        .enumerate()
+        .map(|(i, start)| {
+            tracer
+                .trace(start, theta, start_angle, &TraceOptions::default())
+                .map_err(|e| CliError::bad_input(format!("guide {i} (from side {side}): {e}")))
+        })
+        .collect::<CliResult<Vec<_>>>()?;
+    Ok(Guides { curves, side, theta, start_angle })
+}
+
+/// Index of the side with the greatest length (the first of equals).
+fn longest_side<'a>(mesh: &TriMesh, sides: impl Iterator<Item = &'a [u32]>) -> usize {
+    let p = mesh.positions();
+    let lengths = sides.map(|v| v.windows(2).map(|w| (p[w[1] as usize] - p[w[0] as usize]).norm()).sum::<f64>());
+    lengths.enumerate().fold((0, f64::NEG_INFINITY), |best, (i, l)| if l > best.1 { (i, l) } else { best }).0
+}
+
+/// Fails with a message naming the first crossing when guides cross (an initial field needs
+/// an ordered, intersection-free set, Sec. 3.2.2).
+pub fn require_no_crossings(report: &IntersectionReport) -> CliResult<()> {
+    let first = report.crossings.first().or(report.self_intersections.first());
+    match first {
+        None => Ok(()),
+        Some(c) => {
+            let p = c.position;
+            Err(CliError::bad_input(format!(
+                "guides {} and {} cross at ({:.3}, {:.3}, {:.3}) ({} crossing(s), {} self-intersection(s)); try another --guide-angle or --guide-side",
+                c.curves[0],
+                c.curves[1],
+                p.x,
+                p.y,
+                p.z,
+                report.crossings.len(),
+                report.self_intersections.len()
+            )))
+        }
+    }
+}
+
+/// Crossings of traced guides.
+pub fn crossings(mesh: &TriMesh, guides: &Guides) -> IntersectionReport {
+    intersections(mesh, &guides.curves)
+}
+
+pub fn stop_name(stop: StopReason) -> &'static str {
+    match stop {
+        StopReason::Boundary => "boundary",
+        StopReason::NoValidCandidate => "no valid continuation",
+        StopReason::LengthLimit => "length limit",
+        StopReason::PointLimit => "point limit",
+    }
+}
+
+/// guides.json: how the guides were traced and, per guide, its edge points (edge, t) and their
+/// positions. `field --guides-file` reads the edge points (and θ).
+#[derive(Serialize, Deserialize)]
+pub struct GuidesFile {
+    pub theta_degrees: f64,
+    pub start_angle_degrees: f64,
+    pub side: usize,
+    pub guides: Vec<GuideRecord>,
+}
+
+#[derive(Serialize, Deserialize)]
+pub struct GuideRecord {
+    pub stop: String,
+    pub length: f64,
+    pub points: Vec<GuidePoint>,
+}
+
+#[derive(Serialize, Deserialize)]
+pub struct GuidePoint {
+    pub edge: [u32; 2],
+    pub t: f64,
+    pub position: [f64; 3],
+}
+
+pub fn guides_json(guides: &Guides) -> String {
+    let file = GuidesFile {
+        theta_degrees: guides.theta,
+        start_angle_degrees: guides.start_angle,
+        side: guides.side,
+        guides: guides
+            .curves
+            .iter()
+            .map(|c| GuideRecord {
+                stop: stop_name(c.stop()).to_string(),
+                length: c.length(),
+                points: c
+                    .points()
+                    .iter()
+                    .zip(c.positions())
+                    .map(|(p, x)| GuidePoint { edge: p.edge, t: p.t, position: [x.x, x.y, x.z] })
+                    .collect(),
+            })
+            .collect(),
+    };
+    // Serialising plain numbers and strings cannot fail; traced positions are finite.
+    serde_json::to_string_pretty(&file).unwrap_or_default()
+}
+
+/// Reads guides.json: θ and each guide's edge points.
+pub fn read_guides_json(path: &Path) -> CliResult<(f64, Vec<Vec<EdgePoint>>)> {
+    let text = std::fs::read_to_string(path).map_err(|e| CliError::bad_input(format!("cannot read {}: {e}", path.display())))?;
+    let file: GuidesFile = serde_json::from_str(&text).map_err(|e| CliError::bad_input(format!("{}: not a guides file: {e}", path.display())))?;
+    let curves = file.guides.iter().map(|g| g.points.iter().map(|p| EdgePoint { edge: p.edge, t: p.t }).collect()).collect();
+    Ok((file.theta_degrees, curves))
+}
+
+/// guides.obj: one named polyline (`l` element) per guide.
+pub fn guides_obj(guides: &Guides) -> String {
+    let mut obj = String::from("# guide P-curves traced by lamella\n");
+    let mut next = 1;
+    for (i, curve) in guides.curves.iter().enumerate() {
+        let _ = writeln!(obj, "o guide_{i}");
+        for p in curve.positions() {
+            let _ = writeln!(obj, "v {} {} {}", p.x, p.y, p.z);
+        }
+        let indices: Vec<String> = (next..next + curve.positions().len()).map(|k| k.to_string()).collect();
+        if indices.len() >= 2 {
+            let _ = writeln!(obj, "l {}", indices.join(" "));
+        }
+        next += curve.positions().len();
+    }
+    obj
+}
