@@ -5,7 +5,7 @@
 //! grown by the reach overlaps the cell. Any face within the reach of a point is then listed in
 //! the point's own cell, so a query tests only that cell's few faces.
 
-use crate::mesh::{TriMesh, Vec3};
+use crate::mesh::{closest_barycentric, TriMesh, Vec3};
 
 /// Most grid cells per face (bounds the memory of very flat or very long meshes).
 const CELLS_PER_FACE: f64 = 4.0;
@@ -98,7 +98,7 @@ impl<'a> SurfaceLocator<'a> {
         let mut best: Option<SurfacePoint> = None;
         for &f in &self.faces[self.cell_start[c]..self.cell_start[c + 1]] {
             let corners = self.mesh.faces()[f as usize].map(|v| self.mesh.positions()[v as usize]);
-            let barycentric = closest_on_triangle(p, &corners);
+            let barycentric = closest_barycentric(p, &corners);
             let q = corners[0] * barycentric[0] + corners[1] * barycentric[1] + corners[2] * barycentric[2];
             let distance = (q - p).norm();
             if distance <= self.reach && best.is_none_or(|b| distance < b.distance) {
@@ -106,85 +106,5 @@ impl<'a> SurfaceLocator<'a> {
             }
         }
         best
-    }
-}
-
-/// Barycentric coordinates of the point of triangle `t` closest to `p` (Voronoi regions of the
-/// vertices, edges and face, tested in turn).
-pub(crate) fn closest_on_triangle(p: &Vec3, t: &[Vec3; 3]) -> [f64; 3] {
-    let [a, b, c] = *t;
-    let (ab, ac, ap) = (b - a, c - a, p - a);
-    let (d1, d2) = (ab.dot(&ap), ac.dot(&ap));
-    if d1 <= 0.0 && d2 <= 0.0 {
-        return [1.0, 0.0, 0.0];
-    }
-    let bp = p - b;
-    let (d3, d4) = (ab.dot(&bp), ac.dot(&bp));
-    if d3 >= 0.0 && d4 <= d3 {
-        return [0.0, 1.0, 0.0];
-    }
-    let vc = d1 * d4 - d3 * d2;
-    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
-        let s = d1 / (d1 - d3);
-        return [1.0 - s, s, 0.0];
-    }
-    let cp = p - c;
-    let (d5, d6) = (ab.dot(&cp), ac.dot(&cp));
-    if d6 >= 0.0 && d5 <= d6 {
-        return [0.0, 0.0, 1.0];
-    }
-    let vb = d5 * d2 - d1 * d6;
-    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
-        let s = d2 / (d2 - d6);
-        return [1.0 - s, 0.0, s];
-    }
-    let va = d3 * d6 - d5 * d4;
-    if va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0 {
-        let s = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        return [0.0, 1.0 - s, s];
-    }
-    let denominator = va + vb + vc;
-    let (v, w) = (vb / denominator, vc / denominator);
-    [1.0 - v - w, v, w]
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Brute force: the closest of many sample points of the triangle.
-    fn sampled_distance(p: &Vec3, t: &[Vec3; 3]) -> f64 {
-        let n = 200;
-        let mut best = f64::INFINITY;
-        for i in 0..=n {
-            for j in 0..=n - i {
-                let (u, v) = (i as f64 / n as f64, j as f64 / n as f64);
-                let q = t[0] * (1.0 - u - v) + t[1] * u + t[2] * v;
-                best = best.min((q - p).norm());
-            }
-        }
-        best
-    }
-
-    #[test]
-    fn closest_point_matches_dense_sampling_in_every_region() {
-        let t = [Vec3::new(0.0, 0.0, 0.0), Vec3::new(2.0, 0.0, 0.3), Vec3::new(0.5, 1.5, -0.2)];
-        let queries = [
-            Vec3::new(0.7, 0.4, 1.0),   // above the face
-            Vec3::new(-1.0, -1.0, 0.0), // vertex a
-            Vec3::new(3.0, -0.5, 0.0),  // vertex b
-            Vec3::new(0.5, 3.0, 0.0),   // vertex c
-            Vec3::new(1.0, -1.0, 0.5),  // edge ab
-            Vec3::new(-0.8, 0.8, 0.0),  // edge ac
-            Vec3::new(1.8, 1.2, 0.0),   // edge bc
-        ];
-        for p in &queries {
-            let w = closest_on_triangle(p, &t);
-            assert!(w.iter().all(|&x| (-1e-12..=1.0 + 1e-12).contains(&x)) && (w.iter().sum::<f64>() - 1.0).abs() < 1e-12);
-            let q = t[0] * w[0] + t[1] * w[1] + t[2] * w[2];
-            let exact = (q - p).norm();
-            let sampled = sampled_distance(p, &t);
-            assert!(exact <= sampled + 1e-12 && sampled - exact < 2e-2, "{p:?}: {exact} vs {sampled}");
-        }
     }
 }

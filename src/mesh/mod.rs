@@ -3,6 +3,7 @@
 //! normals, mixed Voronoi areas, ordered vertex stars (Fig. 7), per-face gradient operators,
 //! boundary loops, edge → face adjacency, and unit scaling.
 
+mod closest_point;
 mod edge_faces;
 mod edge_point;
 mod error;
@@ -19,6 +20,7 @@ mod validation;
 mod voronoi_area;
 
 pub use edge_faces::EdgeFaces;
+pub(crate) use closest_point::closest_barycentric;
 pub use edge_point::EdgePoint;
 pub use error::MeshError;
 pub use star::VertexStar;
