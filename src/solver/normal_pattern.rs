@@ -10,6 +10,8 @@ pub(crate) struct NormalPattern {
     pub row_idx: Vec<usize>,
     /// Position of the diagonal entry of each column.
     pub diagonal: Vec<usize>,
+    /// Whether each value position is on the diagonal.
+    pub is_diagonal: Vec<bool>,
     /// `gram_targets[gram_ptr[b]..]`: for each upper pair (i ≤ j) of the global positions of a block b
     /// without a local group (none for the others),
     /// in the order of its Gram slot, the value position in S.
@@ -45,6 +47,7 @@ impl NormalPattern {
         let (col_ptr, row_idx) = upper_pattern(g, &clique_ptr, &clique_vars);
         let mut pattern = Self {
             diagonal: Vec::with_capacity(g),
+            is_diagonal: Vec::new(),
             col_ptr,
             row_idx,
             gram_ptr: vec![0],
@@ -52,9 +55,11 @@ impl NormalPattern {
             schur_ptr: vec![0],
             schur_targets: Vec::new(),
         };
+        pattern.is_diagonal = vec![false; pattern.row_idx.len()];
         for j in 0..g {
             let d = pattern.position(j, j);
             pattern.diagonal.push(d);
+            pattern.is_diagonal[d] = true;
         }
         for b in 0..blocks.block_count() {
             let vars = blocks.variables(b);
@@ -79,6 +84,21 @@ impl NormalPattern {
             pattern.schur_ptr.push(pattern.schur_targets.len());
         }
         pattern
+    }
+
+    /// Renumbers the value positions: the value at position t moves to `new_position[t]` (a
+    /// permutation of the positions, e.g. the sparse Cholesky's storage order). Afterwards the
+    /// scatter maps and diagonals refer to the new positions; `col_ptr`/`row_idx` keep the
+    /// original upper pattern.
+    pub fn renumber(&mut self, new_position: &[usize]) {
+        for t in self.diagonal.iter_mut().chain(&mut self.gram_targets).chain(&mut self.schur_targets) {
+            *t = new_position[*t];
+        }
+        let mut is_diagonal = vec![false; self.is_diagonal.len()];
+        for (t, &d) in self.is_diagonal.iter().enumerate() {
+            is_diagonal[new_position[t]] = d;
+        }
+        self.is_diagonal = is_diagonal;
     }
 
     pub fn dimension(&self) -> usize {
