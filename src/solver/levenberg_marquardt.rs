@@ -242,7 +242,7 @@ impl LevenbergMarquardt {
     fn solve_damped(&mut self, mu: f64, eliminated: Option<bool>) -> bool {
         let eliminated = match eliminated {
             Some(ok) => ok,
-            None => self.systems.eliminate(&self.groups, mu),
+            None => self.systems.eliminate(&self.blocks, &self.groups, &self.slots, mu),
         };
         if !eliminated {
             return false;

@@ -11,7 +11,10 @@
 //! substitution), the Schur terms are W = ZᵀZ and v = Zᵀz, and h_L = −L⁻ᵀ(z + Z h_G).
 //! The groups are small (a handful of variables), so everything is hand-rolled on row-major
 //! sections of one segment per group, all segments in one buffer (so that the reduced system
-//! can gather the Schur terms by flat positions).
+//! can gather the Schur terms by flat positions). The elimination works in place (L over D_L,
+//! [Z | z] over [C_L | g_L], W − G_L over G_L), which halves the memory every pass streams
+//! through; a trial with another μ (after a rejected step) accumulates again from the block
+//! slots, which stay valid for the whole iteration.
 //!
 //! The global Gram G_L = J_GᵀJ_G of the group's blocks is summed here too (from the same
 //! Jacobian rows) rather than scattered into H_GG block by block: the group hands S the single
@@ -22,33 +25,35 @@ use super::structure::{triangle_len, BlockStructure, GroupStructure};
 /// Dense workspaces of all local groups (group l: k local variables, q coupled global
 /// variables), sized once, one segment per group in one buffer.
 ///
-/// A segment holds, in this order: D_L (k×k, lower triangle used), [C_L | g_L] (k×(q+1)), the
-/// Cholesky factor L (k×k, lower), [Z | z] (k×(q+1)), G_L and W − G_L (upper triangles of q×q
-/// packed row by row, the order of the pattern's Schur targets), v (q), and the dense local and
-/// global entries of the Jacobian row being accumulated (k + q). All row-major.
+/// A segment holds, in this order: D_L, after elimination its Cholesky factor L (k×k, lower
+/// triangle used); [C_L | g_L], after elimination [Z | z] (k×(q+1)); G_L, after elimination
+/// W − G_L (upper triangle of q×q packed row by row, the order of the pattern's Schur targets);
+/// v (q); and the dense local and global entries of the Jacobian row being accumulated (k + q).
+/// All row-major.
 pub(crate) struct GroupSystems {
     /// `buffer[segment_ptr[l]..segment_ptr[l + 1]]`: the segment of group l.
     segment_ptr: Vec<usize>,
     buffer: Vec<f64>,
+    /// Whether the segments hold accumulated, not yet eliminated systems.
+    accumulated: bool,
 }
 
 /// Mutable views of a group's segment.
 struct Sections<'a> {
+    /// D_L, then L.
     normal: &'a mut [f64],
+    /// [C_L | g_L], then [Z | z].
     coupling: &'a mut [f64],
-    factor: &'a mut [f64],
-    solved: &'a mut [f64],
+    /// G_L, then W − G_L.
     gram: &'a mut [f64],
-    schur: &'a mut [f64],
     schur_rhs: &'a mut [f64],
     row_locals: &'a mut [f64],
     row_globals: &'a mut [f64],
 }
 
 /// Section lengths of a group with k local and q global variables, in segment order.
-fn section_lengths(k: usize, q: usize) -> [usize; 9] {
-    let w = q + 1;
-    [k * k, k * w, k * k, k * w, triangle_len(q), triangle_len(q), q, k, q]
+fn section_lengths(k: usize, q: usize) -> [usize; 6] {
+    [k * k, k * (q + 1), triangle_len(q), q, k, q]
 }
 
 /// Offset of section `index` (see [`section_lengths`]) within a segment.
@@ -56,29 +61,21 @@ fn section_offset(k: usize, q: usize, index: usize) -> usize {
     section_lengths(k, q)[..index].iter().sum()
 }
 
-const FACTOR: usize = 2;
-const SOLVED: usize = 3;
-const GRAM: usize = 4;
-const SCHUR: usize = 5;
-const SCHUR_RHS: usize = 6;
+const COUPLING: usize = 1;
+const GRAM: usize = 2;
+const SCHUR_RHS: usize = 3;
 
 fn sections(k: usize, q: usize, segment: &mut [f64]) -> Sections<'_> {
-    let [normal, coupling, factor, solved, gram, schur, schur_rhs, row_locals, _] = section_lengths(k, q);
+    let [normal, coupling, gram, schur_rhs, row_locals, _] = section_lengths(k, q);
     let (normal_part, rest) = segment.split_at_mut(normal);
     let (coupling_part, rest) = rest.split_at_mut(coupling);
-    let (factor_part, rest) = rest.split_at_mut(factor);
-    let (solved_part, rest) = rest.split_at_mut(solved);
     let (gram_part, rest) = rest.split_at_mut(gram);
-    let (schur_part, rest) = rest.split_at_mut(schur);
     let (schur_rhs_part, rest) = rest.split_at_mut(schur_rhs);
     let (row_locals_part, row_globals_part) = rest.split_at_mut(row_locals);
     Sections {
         normal: normal_part,
         coupling: coupling_part,
-        factor: factor_part,
-        solved: solved_part,
         gram: gram_part,
-        schur: schur_part,
         schur_rhs: schur_rhs_part,
         row_locals: row_locals_part,
         row_globals: row_globals_part,
@@ -99,7 +96,7 @@ impl GroupSystems {
             segment_ptr.push(segment_ptr[l] + section_lengths(k, q).iter().sum::<usize>());
         }
         let len = segment_ptr[groups.group_count()];
-        Self { segment_ptr, buffer: vec![0.0; len] }
+        Self { segment_ptr, buffer: vec![0.0; len], accumulated: false }
     }
 
     /// The whole buffer (for gathers by [`Self::schur_start`] and [`Self::schur_rhs_start`]).
@@ -111,7 +108,7 @@ impl GroupSystems {
     /// triangle packed row by row (valid after an elimination).
     pub fn schur_start(&self, groups: &GroupStructure, l: usize) -> usize {
         let (k, q) = dimensions(groups, l);
-        self.segment_ptr[l] + section_offset(k, q, SCHUR)
+        self.segment_ptr[l] + section_offset(k, q, GRAM)
     }
 
     /// Position in [`Self::buffer`] of group l's v = C_Lᵀ(D_L+μI)⁻¹g_L (valid after an
@@ -122,14 +119,15 @@ impl GroupSystems {
     }
 
     /// The diagonal of group l's G_L = J_GᵀJ_G, in the order of its globals (valid after an
-    /// accumulation).
+    /// accumulation without elimination).
     pub fn gram_diagonal<'a>(&'a self, groups: &GroupStructure, l: usize) -> impl Iterator<Item = f64> + 'a {
         let (k, q) = dimensions(groups, l);
         let gram = self.segment_ptr[l] + section_offset(k, q, GRAM);
         (0..q).map(move |i| self.buffer[gram + packed_upper_index(i, i, q)])
     }
 
-    /// Largest diagonal entry of any D_L (0 without groups).
+    /// Largest diagonal entry of any D_L (0 without groups; valid after an accumulation without
+    /// elimination).
     pub fn max_diagonal(&self, groups: &GroupStructure) -> f64 {
         (0..groups.group_count()).fold(0.0, |m: f64, l| {
             let k = groups.size(l);
@@ -141,6 +139,7 @@ impl GroupSystems {
     /// if `mu` is given, eliminates it right away while its segment is in cache. Returns `false`
     /// if an elimination fails.
     pub fn accumulate(&mut self, blocks: &BlockStructure, groups: &GroupStructure, slots: &[f64], mu: Option<f64>) -> bool {
+        self.accumulated = mu.is_none();
         let failed = try_for_each_segment(&mut self.buffer, &self.segment_ptr, &|l, segment| {
             let (k, q) = dimensions(groups, l);
             let mut s = sections(k, q, segment);
@@ -151,12 +150,18 @@ impl GroupSystems {
     }
 
     /// Factors every D_L + μI = LLᵀ, solves [Z | z] = L⁻¹[C_L | g_L] and forms W = ZᵀZ,
-    /// v = Zᵀz (in parallel). Returns `false` if a dense factorisation fails (not numerically
-    /// positive definite).
-    pub fn eliminate(&mut self, groups: &GroupStructure, mu: f64) -> bool {
+    /// v = Zᵀz (in parallel), accumulating the systems from `slots` again first unless they are
+    /// fresh from [`Self::accumulate`] without μ. Returns `false` if a dense factorisation fails
+    /// (not numerically positive definite).
+    pub fn eliminate(&mut self, blocks: &BlockStructure, groups: &GroupStructure, slots: &[f64], mu: f64) -> bool {
+        if !self.accumulated {
+            return self.accumulate(blocks, groups, slots, Some(mu));
+        }
+        self.accumulated = false;
         let failed = try_for_each_segment(&mut self.buffer, &self.segment_ptr, &|l, segment| {
             let (k, q) = dimensions(groups, l);
-            eliminate_kernel(k, q, &mut sections(k, q, segment), mu)
+            let mut s = sections(k, q, segment);
+            eliminate_kernel(k, q, &mut s, mu)
         });
         failed.is_none()
     }
@@ -168,9 +173,8 @@ impl GroupSystems {
             let (k, q) = dimensions(groups, l);
             let segment = &self.buffer[self.segment_ptr[l]..self.segment_ptr[l + 1]];
             let w = q + 1;
-            let factor_start = section_offset(k, q, FACTOR);
-            let factor = &segment[factor_start..factor_start + k * k];
-            let solved_start = section_offset(k, q, SOLVED);
+            let factor = &segment[..k * k];
+            let solved_start = section_offset(k, q, COUPLING);
             let solved = &segment[solved_start..solved_start + k * w];
             let globals = groups.globals(l);
             for (h, z_row) in step.iter_mut().zip(solved.chunks_exact(w)) {
@@ -258,34 +262,35 @@ fn accumulate_kernel(k: usize, q: usize, s: &mut Sections<'_>, blocks: &BlockStr
 /// [`GroupSystems::eliminate`] of one group (k local and q global variables).
 fn eliminate_kernel(k: usize, q: usize, s: &mut Sections<'_>, mu: f64) -> bool {
     let w = q + 1;
-    if !cholesky_lower(s.normal, mu, s.factor, k) {
+    if !cholesky_lower_in_place(s.normal, mu, k) {
         return false;
     }
-    // Forward substitution, row by row: Z_i = (B_i − Σ_{p<i} L_ip Z_p) / L_ii.
-    s.solved.copy_from_slice(s.coupling);
+    let factor = &*s.normal;
+    // Forward substitution in place, row by row: Z_i = (B_i − Σ_{p<i} L_ip Z_p) / L_ii.
     for i in 0..k {
-        let (done, rest) = s.solved.split_at_mut(i * w);
+        let (done, rest) = s.coupling.split_at_mut(i * w);
         let current = &mut rest[..w];
-        for (p, &lip) in s.factor[i * k..i * k + i].iter().enumerate() {
+        for (p, &lip) in factor[i * k..i * k + i].iter().enumerate() {
             for (c, &z) in current.iter_mut().zip(&done[p * w..(p + 1) * w]) {
                 *c -= lip * z;
             }
         }
-        let diagonal = s.factor[i * k + i];
+        let diagonal = factor[i * k + i];
         for c in current.iter_mut() {
             *c /= diagonal;
         }
     }
-    // W − G_L = ZᵀZ − G_L (upper, packed) and v = Zᵀz, summed over the rows of Z in order.
-    for (wij, &g) in s.schur.iter_mut().zip(s.gram.iter()) {
-        *wij = -g;
+    // W − G_L = ZᵀZ − G_L (upper, packed, over G_L) and v = Zᵀz, summed over the rows of Z in
+    // order.
+    for wij in s.gram.iter_mut() {
+        *wij = -*wij;
     }
     s.schur_rhs.fill(0.0);
-    for z_row in s.solved.chunks_exact(w) {
+    for z_row in s.coupling.chunks_exact(w) {
         let mut t = 0;
         for i in 0..q {
             let zi = z_row[i];
-            for (wij, &zj) in s.schur[t..t + q - i].iter_mut().zip(&z_row[i..q]) {
+            for (wij, &zj) in s.gram[t..t + q - i].iter_mut().zip(&z_row[i..q]) {
                 *wij += zi * zj;
             }
             t += q - i;
@@ -295,19 +300,20 @@ fn eliminate_kernel(k: usize, q: usize, s: &mut Sections<'_>, mu: f64) -> bool {
     true
 }
 
-/// Cholesky factor (lower, row-major k×k, into `factor`) of `normal + μI`, reading only the lower
-/// triangle of `normal`. Returns `false` on a non-positive or non-finite pivot.
-fn cholesky_lower(normal: &[f64], mu: f64, factor: &mut [f64], k: usize) -> bool {
+/// Cholesky factor L of `normal + μI` (row-major k×k), computed in place over the lower triangle
+/// of `normal`. Returns `false` on a non-positive or non-finite pivot (the matrix is then partly
+/// overwritten).
+fn cholesky_lower_in_place(normal: &mut [f64], mu: f64, k: usize) -> bool {
     for j in 0..k {
-        let (above, rest) = factor.split_at_mut(j * k);
+        let (above, rest) = normal.split_at_mut(j * k);
         let row_j = &mut rest[..k];
         for i in 0..j {
             let row_i = &above[i * k..i * k + i];
             let dot: f64 = row_i.iter().zip(&row_j[..i]).map(|(a, b)| a * b).sum();
-            row_j[i] = (normal[j * k + i] - dot) / above[i * k + i];
+            row_j[i] = (row_j[i] - dot) / above[i * k + i];
         }
         let squares: f64 = row_j[..j].iter().map(|v| v * v).sum();
-        let pivot = normal[j * k + j] + mu - squares;
+        let pivot = row_j[j] + mu - squares;
         if !(pivot > 0.0 && pivot.is_finite()) {
             return false;
         }
