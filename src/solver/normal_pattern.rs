@@ -3,7 +3,7 @@
 //!
 //! S has an entry (i, j) when i and j are global variables of one block without a local group, or
 //! global variables of one local group (the Schur-complement fill), plus the whole diagonal.
-use super::structure::{triangle_len, BlockStructure, GroupStructure};
+use super::structure::{BlockStructure, GroupStructure};
 
 pub(crate) struct NormalPattern {
     pub col_ptr: Vec<usize>,
@@ -46,7 +46,7 @@ impl NormalPattern {
         }
         let (col_ptr, row_idx) = upper_pattern(g, &clique_ptr, &clique_vars);
         let mut pattern = Self {
-            diagonal: Vec::with_capacity(g),
+            diagonal: Vec::new(),
             is_diagonal: Vec::new(),
             col_ptr,
             row_idx,
@@ -55,33 +55,32 @@ impl NormalPattern {
             schur_ptr: vec![0],
             schur_targets: Vec::new(),
         };
-        pattern.is_diagonal = vec![false; pattern.row_idx.len()];
-        for j in 0..g {
-            let d = pattern.position(j, j);
-            pattern.diagonal.push(d);
-            pattern.is_diagonal[d] = true;
-        }
+        // Every (row, column) entry the scatter maps need, looked up at once: diagonal, then the
+        // Gram pairs of the blocks without a group, then the Schur pairs of the groups.
+        let mut entries: Vec<(u32, u32)> = (0..g as u32).map(|j| (j, j)).collect();
         for b in 0..blocks.block_count() {
             let vars = blocks.variables(b);
             let positions = if blocks.group[b].is_none() { blocks.global_positions(b) } else { &[] };
-            pattern.gram_targets.reserve(triangle_len(positions.len()));
             for (i, &pi) in positions.iter().enumerate() {
-                for &pj in &positions[i..] {
-                    let target = pattern.position(vars[pi as usize] as usize, vars[pj as usize] as usize);
-                    pattern.gram_targets.push(target);
-                }
+                entries.extend(positions[i..].iter().map(|&pj| (vars[pi as usize], vars[pj as usize])));
             }
-            pattern.gram_ptr.push(pattern.gram_targets.len());
+            pattern.gram_ptr.push(entries.len() - g);
         }
+        let gram_end = entries.len();
         for l in 0..groups.group_count() {
             let set = groups.globals(l);
             for (i, &vi) in set.iter().enumerate() {
-                for &vj in &set[i..] {
-                    let target = pattern.position(vi as usize, vj as usize);
-                    pattern.schur_targets.push(target);
-                }
+                entries.extend(set[i..].iter().map(|&vj| (vi, vj)));
             }
-            pattern.schur_ptr.push(pattern.schur_targets.len());
+            pattern.schur_ptr.push(entries.len() - gram_end);
+        }
+        let mut targets = pattern.positions(&entries);
+        pattern.schur_targets = targets.split_off(gram_end);
+        pattern.gram_targets = targets.split_off(g);
+        pattern.diagonal = targets;
+        pattern.is_diagonal = vec![false; pattern.row_idx.len()];
+        for &d in &pattern.diagonal {
+            pattern.is_diagonal[d] = true;
         }
         pattern
     }
@@ -105,13 +104,39 @@ impl NormalPattern {
         self.col_ptr.len() - 1
     }
 
-    /// Value position of entry (a, b) of the symmetric matrix (stored as (min, max)).
-    fn position(&self, a: usize, b: usize) -> usize {
-        let (row, col) = if a <= b { (a, b) } else { (b, a) };
-        let rows = &self.row_idx[self.col_ptr[col]..self.col_ptr[col + 1]];
-        // Invariant: the pattern was built from the very cliques and diagonal queried here.
-        let offset = rows.binary_search(&row).expect("normal pattern contains every clique pair");
-        self.col_ptr[col] + offset
+    /// Value positions of the entries (a, b) of the symmetric matrix (stored as (min, max)), in
+    /// order: the entries are bucketed by column, and each column's rows are spread over a dense
+    /// row → position map once (no searching).
+    fn positions(&self, entries: &[(u32, u32)]) -> Vec<usize> {
+        let n = self.dimension();
+        let key = |&(a, b): &(u32, u32)| (a.min(b) as usize, a.max(b) as usize);
+        let mut bucket_ptr = vec![0usize; n + 1];
+        for entry in entries {
+            bucket_ptr[key(entry).1 + 1] += 1;
+        }
+        for c in 0..n {
+            bucket_ptr[c + 1] += bucket_ptr[c];
+        }
+        let mut fill = bucket_ptr.clone();
+        let mut bucket = vec![0usize; entries.len()];
+        for (e, entry) in entries.iter().enumerate() {
+            let c = key(entry).1;
+            bucket[fill[c]] = e;
+            fill[c] += 1;
+        }
+        let mut position_of_row = vec![0usize; n];
+        let mut positions = vec![0usize; entries.len()];
+        for c in 0..n {
+            for p in self.col_ptr[c]..self.col_ptr[c + 1] {
+                position_of_row[self.row_idx[p]] = p;
+            }
+            // Invariant: the pattern was built from the very cliques and diagonal queried here, so
+            // every queried row of column c was just written.
+            for &e in &bucket[bucket_ptr[c]..bucket_ptr[c + 1]] {
+                positions[e] = position_of_row[key(&entries[e]).0];
+            }
+        }
+        positions
     }
 }
 
