@@ -1,12 +1,11 @@
 //! Adaptive Levenberg–Marquardt (Madsen, Nielsen & Tingleff 2004, Alg. 3.16, damping matrix
 //! D = I) on the sparse normal equations, with Schur elimination of local variable groups.
 //! Used for the level-set field optimisation of the paper (Sec. 3.2.2, Eq. 8–12).
-use rayon::prelude::*;
 
-use super::assembly::{assemble_reduced, reduce_blocks};
+use super::assembly::{reduce_blocks, ReducedGather, ReducedSystem};
 use super::evaluation::{evaluate_energy_into, evaluate_energy_standalone, evaluate_slots};
 use super::normal_pattern::NormalPattern;
-use super::schur::GroupSystem;
+use super::schur::GroupSystems;
 use super::sparse_cholesky::SparseCholesky;
 use super::structure::{analyse, BlockStructure, GroupStructure};
 use super::{Convergence, IterationOutcome, LeastSquaresProblem, LmOptions, SolverError};
@@ -29,12 +28,14 @@ pub struct LevenbergMarquardt {
     pattern: NormalPattern,
     /// `None` when there are no global variables.
     cholesky: Option<SparseCholesky>,
-    systems: Vec<GroupSystem>,
+    systems: GroupSystems,
+    gather: ReducedGather,
     slots: Vec<f64>,
     trial_residuals: Vec<f64>,
     gradient: Vec<f64>,
     hessian: Vec<f64>,
-    reduced: Vec<f64>,
+    /// diag(JᵀJ) over the global variables (scratch of [`Self::initial_damping`]).
+    global_diagonal: Vec<f64>,
     step: Vec<f64>,
     trial_x: Vec<f64>,
     mu: Option<f64>,
@@ -47,25 +48,32 @@ impl LevenbergMarquardt {
     /// matrix and its symbolic Cholesky analysis (AMD ordering) once.
     pub fn new<P: LeastSquaresProblem>(problem: &P, options: LmOptions) -> Result<Self, SolverError> {
         let (blocks, groups) = analyse(problem)?;
-        let pattern = NormalPattern::build(&blocks, &groups);
+        let mut pattern = NormalPattern::build(&blocks, &groups);
         let cholesky = if pattern.dimension() > 0 {
-            Some(SparseCholesky::analyse(pattern.col_ptr.clone(), pattern.row_idx.clone())?)
+            let cholesky = SparseCholesky::analyse(pattern.col_ptr.clone(), pattern.row_idx.clone())?;
+            // The reduced matrix is assembled directly in the factorisation's storage order.
+            let mut new_position = vec![0; cholesky.original_positions().len()];
+            for (p, &t) in cholesky.original_positions().iter().enumerate() {
+                new_position[t] = p;
+            }
+            pattern.renumber(&new_position);
+            Some(cholesky)
         } else {
             None
         };
-        let systems = (0..groups.group_count())
-            .map(|l| GroupSystem::new(groups.size(l), groups.globals(l).len()))
-            .collect();
+        let systems = GroupSystems::new(&groups);
+        let gather = ReducedGather::new(&pattern, &groups, &systems);
         let n = blocks.variable_count;
         let nnz = pattern.row_idx.len();
         Ok(Self {
             options,
             systems,
+            gather,
             slots: vec![0.0; blocks.slot_ptr[blocks.block_count()]],
             trial_residuals: vec![0.0; blocks.residual_ptr[blocks.block_count()]],
             gradient: vec![0.0; n],
             hessian: vec![0.0; nnz],
-            reduced: vec![0.0; nnz],
+            global_diagonal: vec![0.0; blocks.global_count],
             step: vec![0.0; n],
             trial_x: vec![0.0; n],
             mu: None,
@@ -117,20 +125,17 @@ impl LevenbergMarquardt {
     pub fn iterate<P: LeastSquaresProblem>(&mut self, problem: &P, x: &mut [f64]) -> Result<IterationOutcome, SolverError> {
         self.check_unchanged(problem, x)?;
         evaluate_slots(problem, &self.blocks, x, &mut self.slots)?;
-        let energy = reduce_blocks(&self.blocks, &self.pattern, &mut self.slots, &mut self.gradient, &mut self.hessian);
-        // With μ already known, each group is eliminated for the first trial right after its
-        // accumulation, while its workspace is still in cache.
+        // The serial reduction of the block slots runs while the other threads accumulate the
+        // groups (which read the slots only). With μ already known, each group is eliminated for
+        // the first trial right after its accumulation, while its workspace is still in cache.
         let known_mu = self.mu;
-        let eliminated = {
-            let (blocks, groups, slots, gradient) = (&self.blocks, &self.groups, &self.slots, &self.gradient);
-            self.systems
-                .par_iter_mut()
-                .enumerate()
-                .map(|(l, system)| {
-                    system.accumulate(l, blocks, groups, slots, gradient);
-                    known_mu.is_none_or(|mu| system.eliminate(mu))
-                })
-                .reduce(|| true, |a, b| a && b)
+        let (energy, eliminated) = {
+            let (blocks, groups, pattern, slots) = (&self.blocks, &self.groups, &self.pattern, &self.slots);
+            let (gradient, hessian, systems) = (&mut self.gradient, &mut self.hessian, &mut self.systems);
+            rayon::join(
+                || reduce_blocks(blocks, pattern, slots, gradient, hessian),
+                || systems.accumulate(blocks, groups, slots, known_mu),
+            )
         };
         let mut first_elimination = known_mu.map(|mu| (mu, eliminated));
         let gradient_norm_inf = self.gradient.iter().fold(0.0, |m: f64, g| m.max(g.abs()));
@@ -204,17 +209,18 @@ impl LevenbergMarquardt {
     }
 
     /// μ₀ = tau · max diag(JᵀJ) over global and local variables (tau itself for a zero Jacobian).
-    /// The global diagonal adds the groups' G_L to H_GG (in `reduced`, used as scratch here).
+    /// The global diagonal adds the diagonals of the groups' G_L to that of H_GG.
     fn initial_damping(&mut self) -> f64 {
-        self.reduced.copy_from_slice(&self.hessian);
-        for (l, system) in self.systems.iter().enumerate() {
-            let targets = &self.pattern.schur_targets[self.pattern.schur_ptr[l]..self.pattern.schur_ptr[l + 1]];
-            for (&t, &g) in targets.iter().zip(system.gram()) {
-                self.reduced[t] += g;
+        for (d, &position) in self.global_diagonal.iter_mut().zip(&self.pattern.diagonal) {
+            *d = self.hessian[position];
+        }
+        for l in 0..self.groups.group_count() {
+            for (&v, g) in self.groups.globals(l).iter().zip(self.systems.gram_diagonal(&self.groups, l)) {
+                self.global_diagonal[v as usize] += g;
             }
         }
-        let global_max = self.pattern.diagonal.iter().fold(0.0, |m: f64, &d| m.max(self.reduced[d]));
-        let max_diagonal = self.systems.iter().fold(global_max, |m, s| m.max(s.max_diagonal()));
+        let global_max = self.global_diagonal.iter().fold(0.0, |m: f64, &d| m.max(d));
+        let max_diagonal = global_max.max(self.systems.max_diagonal(&self.groups));
         let scale = if max_diagonal > 0.0 { max_diagonal } else { 1.0 };
         self.clamp_damping(self.options.tau * scale)
     }
@@ -236,39 +242,29 @@ impl LevenbergMarquardt {
     fn solve_damped(&mut self, mu: f64, eliminated: Option<bool>) -> bool {
         let eliminated = match eliminated {
             Some(ok) => ok,
-            None => self.systems.par_iter_mut().map(|system| system.eliminate(mu)).reduce(|| true, |a, b| a && b),
+            None => self.systems.eliminate(&self.blocks, &self.groups, &self.slots, mu),
         };
         if !eliminated {
             return false;
         }
         let g = self.blocks.global_count;
-        let (global_step, _) = self.step.split_at_mut(g);
-        assemble_reduced(
-            &self.pattern,
-            &self.groups,
-            &self.systems,
-            &self.hessian,
-            &self.gradient[..g],
+        let (global_step, local_step) = self.step.split_at_mut(g);
+        let reduced = ReducedSystem {
+            pattern: &self.pattern,
+            gather: &self.gather,
+            systems: &self.systems,
+            hessian: &self.hessian,
+            gradient: &self.gradient[..g],
             mu,
-            &mut self.reduced,
-            global_step,
-        );
+        };
         if let Some(cholesky) = self.cholesky.as_mut() {
-            if !cholesky.factorize(&self.reduced) {
+            if !cholesky.factorize_with(|values| reduced.fill_values(values)) {
                 return false;
             }
+            reduced.fill_rhs(global_step);
             cholesky.solve_in_place(global_step);
         }
-        {
-            let (global_step, groups) = (&self.step[..g], &self.groups);
-            self.systems
-                .par_iter_mut()
-                .enumerate()
-                .for_each(|(l, system)| system.back_substitute(groups.globals(l), global_step));
-        }
-        for (l, system) in self.systems.iter().enumerate() {
-            self.step[self.groups.starts[l]..self.groups.starts[l + 1]].copy_from_slice(system.step());
-        }
+        self.systems.back_substitute(&self.groups, global_step, local_step);
         self.step.iter().all(|h| h.is_finite())
     }
 

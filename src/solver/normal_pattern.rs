@@ -3,13 +3,15 @@
 //!
 //! S has an entry (i, j) when i and j are global variables of one block without a local group, or
 //! global variables of one local group (the Schur-complement fill), plus the whole diagonal.
-use super::structure::{triangle_len, BlockStructure, GroupStructure};
+use super::structure::{BlockStructure, GroupStructure};
 
 pub(crate) struct NormalPattern {
     pub col_ptr: Vec<usize>,
     pub row_idx: Vec<usize>,
     /// Position of the diagonal entry of each column.
     pub diagonal: Vec<usize>,
+    /// Whether each value position is on the diagonal.
+    pub is_diagonal: Vec<bool>,
     /// `gram_targets[gram_ptr[b]..]`: for each upper pair (i ≤ j) of the global positions of a block b
     /// without a local group (none for the others),
     /// in the order of its Gram slot, the value position in S.
@@ -44,7 +46,8 @@ impl NormalPattern {
         }
         let (col_ptr, row_idx) = upper_pattern(g, &clique_ptr, &clique_vars);
         let mut pattern = Self {
-            diagonal: Vec::with_capacity(g),
+            diagonal: Vec::new(),
+            is_diagonal: Vec::new(),
             col_ptr,
             row_idx,
             gram_ptr: vec![0],
@@ -52,46 +55,88 @@ impl NormalPattern {
             schur_ptr: vec![0],
             schur_targets: Vec::new(),
         };
-        for j in 0..g {
-            let d = pattern.position(j, j);
-            pattern.diagonal.push(d);
-        }
+        // Every (row, column) entry the scatter maps need, looked up at once: diagonal, then the
+        // Gram pairs of the blocks without a group, then the Schur pairs of the groups.
+        let mut entries: Vec<(u32, u32)> = (0..g as u32).map(|j| (j, j)).collect();
         for b in 0..blocks.block_count() {
             let vars = blocks.variables(b);
             let positions = if blocks.group[b].is_none() { blocks.global_positions(b) } else { &[] };
-            pattern.gram_targets.reserve(triangle_len(positions.len()));
             for (i, &pi) in positions.iter().enumerate() {
-                for &pj in &positions[i..] {
-                    let target = pattern.position(vars[pi as usize] as usize, vars[pj as usize] as usize);
-                    pattern.gram_targets.push(target);
-                }
+                entries.extend(positions[i..].iter().map(|&pj| (vars[pi as usize], vars[pj as usize])));
             }
-            pattern.gram_ptr.push(pattern.gram_targets.len());
+            pattern.gram_ptr.push(entries.len() - g);
         }
+        let gram_end = entries.len();
         for l in 0..groups.group_count() {
             let set = groups.globals(l);
             for (i, &vi) in set.iter().enumerate() {
-                for &vj in &set[i..] {
-                    let target = pattern.position(vi as usize, vj as usize);
-                    pattern.schur_targets.push(target);
-                }
+                entries.extend(set[i..].iter().map(|&vj| (vi, vj)));
             }
-            pattern.schur_ptr.push(pattern.schur_targets.len());
+            pattern.schur_ptr.push(entries.len() - gram_end);
+        }
+        let mut targets = pattern.positions(&entries);
+        pattern.schur_targets = targets.split_off(gram_end);
+        pattern.gram_targets = targets.split_off(g);
+        pattern.diagonal = targets;
+        pattern.is_diagonal = vec![false; pattern.row_idx.len()];
+        for &d in &pattern.diagonal {
+            pattern.is_diagonal[d] = true;
         }
         pattern
+    }
+
+    /// Renumbers the value positions: the value at position t moves to `new_position[t]` (a
+    /// permutation of the positions, e.g. the sparse Cholesky's storage order). Afterwards the
+    /// scatter maps and diagonals refer to the new positions; `col_ptr`/`row_idx` keep the
+    /// original upper pattern.
+    pub fn renumber(&mut self, new_position: &[usize]) {
+        for t in self.diagonal.iter_mut().chain(&mut self.gram_targets).chain(&mut self.schur_targets) {
+            *t = new_position[*t];
+        }
+        let mut is_diagonal = vec![false; self.is_diagonal.len()];
+        for (t, &d) in self.is_diagonal.iter().enumerate() {
+            is_diagonal[new_position[t]] = d;
+        }
+        self.is_diagonal = is_diagonal;
     }
 
     pub fn dimension(&self) -> usize {
         self.col_ptr.len() - 1
     }
 
-    /// Value position of entry (a, b) of the symmetric matrix (stored as (min, max)).
-    fn position(&self, a: usize, b: usize) -> usize {
-        let (row, col) = if a <= b { (a, b) } else { (b, a) };
-        let rows = &self.row_idx[self.col_ptr[col]..self.col_ptr[col + 1]];
-        // Invariant: the pattern was built from the very cliques and diagonal queried here.
-        let offset = rows.binary_search(&row).expect("normal pattern contains every clique pair");
-        self.col_ptr[col] + offset
+    /// Value positions of the entries (a, b) of the symmetric matrix (stored as (min, max)), in
+    /// order: the entries are bucketed by column, and each column's rows are spread over a dense
+    /// row → position map once (no searching).
+    fn positions(&self, entries: &[(u32, u32)]) -> Vec<usize> {
+        let n = self.dimension();
+        let key = |&(a, b): &(u32, u32)| (a.min(b) as usize, a.max(b) as usize);
+        let mut bucket_ptr = vec![0usize; n + 1];
+        for entry in entries {
+            bucket_ptr[key(entry).1 + 1] += 1;
+        }
+        for c in 0..n {
+            bucket_ptr[c + 1] += bucket_ptr[c];
+        }
+        let mut fill = bucket_ptr.clone();
+        let mut bucket = vec![0usize; entries.len()];
+        for (e, entry) in entries.iter().enumerate() {
+            let c = key(entry).1;
+            bucket[fill[c]] = e;
+            fill[c] += 1;
+        }
+        let mut position_of_row = vec![0usize; n];
+        let mut positions = vec![0usize; entries.len()];
+        for c in 0..n {
+            for p in self.col_ptr[c]..self.col_ptr[c + 1] {
+                position_of_row[self.row_idx[p]] = p;
+            }
+            // Invariant: the pattern was built from the very cliques and diagonal queried here, so
+            // every queried row of column c was just written.
+            for &e in &bucket[bucket_ptr[c]..bucket_ptr[c + 1]] {
+                positions[e] = position_of_row[key(&entries[e]).0];
+            }
+        }
+        positions
     }
 }
 

@@ -10,216 +10,287 @@
 //! With the Cholesky factor D_L + μI = L Lᵀ and [Z | z] = L⁻¹[C_L | g_L] (one forward
 //! substitution), the Schur terms are W = ZᵀZ and v = Zᵀz, and h_L = −L⁻ᵀ(z + Z h_G).
 //! The groups are small (a handful of variables), so everything is hand-rolled on row-major
-//! slices of one buffer per group.
+//! sections of one segment per group, all segments in one buffer (so that the reduced system
+//! can gather the Schur terms by flat positions). The elimination works in place (L over D_L,
+//! [Z | z] over [C_L | g_L], W − G_L over G_L), which halves the memory every pass streams
+//! through; a trial with another μ (after a rejected step) accumulates again from the block
+//! slots, which stay valid for the whole iteration.
 //!
 //! The global Gram G_L = J_GᵀJ_G of the group's blocks is summed here too (from the same
 //! Jacobian rows) rather than scattered into H_GG block by block: the group hands S the single
 //! packed term W − G_L on its Schur targets, which cover every global pair of its blocks.
+use super::segments::try_for_each_segment;
 use super::structure::{triangle_len, BlockStructure, GroupStructure};
 
-/// Dense per-group workspace (k local variables, q coupled global variables), sized once.
+/// Dense workspaces of all local groups (group l: k local variables, q coupled global
+/// variables), sized once, one segment per group in one buffer.
 ///
-/// `buffer` holds, in this order: D_L (k×k, lower triangle used), [C_L | g_L] (k×(q+1)), the
-/// Cholesky factor L (k×k, lower), [Z | z] (k×(q+1)), G_L and W − G_L (upper triangles of q×q
-/// packed row by row, the order of the pattern's Schur targets), v (q) and h_L (k). All row-major.
-pub(crate) struct GroupSystem {
-    k: usize,
-    q: usize,
+/// A segment holds, in this order: D_L, after elimination its Cholesky factor L (k×k, lower
+/// triangle used); [C_L | g_L], after elimination [Z | z] (k×(q+1)); G_L, after elimination
+/// W − G_L (upper triangle of q×q packed row by row, the order of the pattern's Schur targets);
+/// v (q); and the dense local and global entries of the Jacobian row being accumulated (k + q).
+/// All row-major.
+pub(crate) struct GroupSystems {
+    /// `buffer[segment_ptr[l]..segment_ptr[l + 1]]`: the segment of group l.
+    segment_ptr: Vec<usize>,
     buffer: Vec<f64>,
-    /// Nonzero local (offset, value) and global (coupling index, value) entries of one
-    /// Jacobian row (capacities k and q, never exceeded).
-    row_locals: Vec<(u32, f64)>,
-    row_globals: Vec<(u32, f64)>,
+    /// Whether the segments hold accumulated, not yet eliminated systems.
+    accumulated: bool,
 }
 
-/// Mutable views of a group's workspace sections.
+/// Mutable views of a group's segment.
 struct Sections<'a> {
+    /// D_L, then L.
     normal: &'a mut [f64],
+    /// [C_L | g_L], then [Z | z].
     coupling: &'a mut [f64],
-    factor: &'a mut [f64],
-    solved: &'a mut [f64],
+    /// G_L, then W − G_L.
     gram: &'a mut [f64],
-    schur: &'a mut [f64],
     schur_rhs: &'a mut [f64],
-    step: &'a mut [f64],
+    row_locals: &'a mut [f64],
+    row_globals: &'a mut [f64],
 }
 
-impl GroupSystem {
-    pub fn new(k: usize, q: usize) -> Self {
-        let w = q + 1;
-        let len = 2 * k * k + 2 * k * w + 2 * triangle_len(q) + q + k;
-        Self { k, q, buffer: vec![0.0; len], row_locals: Vec::with_capacity(k), row_globals: Vec::with_capacity(q) }
+/// Section lengths of a group with k local and q global variables, in segment order.
+fn section_lengths(k: usize, q: usize) -> [usize; 6] {
+    [k * k, k * (q + 1), triangle_len(q), q, k, q]
+}
+
+/// Offset of section `index` (see [`section_lengths`]) within a segment.
+fn section_offset(k: usize, q: usize, index: usize) -> usize {
+    section_lengths(k, q)[..index].iter().sum()
+}
+
+const COUPLING: usize = 1;
+const GRAM: usize = 2;
+const SCHUR_RHS: usize = 3;
+
+fn sections(k: usize, q: usize, segment: &mut [f64]) -> Sections<'_> {
+    let [normal, coupling, gram, schur_rhs, row_locals, _] = section_lengths(k, q);
+    let (normal_part, rest) = segment.split_at_mut(normal);
+    let (coupling_part, rest) = rest.split_at_mut(coupling);
+    let (gram_part, rest) = rest.split_at_mut(gram);
+    let (schur_rhs_part, rest) = rest.split_at_mut(schur_rhs);
+    let (row_locals_part, row_globals_part) = rest.split_at_mut(row_locals);
+    Sections {
+        normal: normal_part,
+        coupling: coupling_part,
+        gram: gram_part,
+        schur_rhs: schur_rhs_part,
+        row_locals: row_locals_part,
+        row_globals: row_globals_part,
+    }
+}
+
+/// k and q of group l.
+fn dimensions(groups: &GroupStructure, l: usize) -> (usize, usize) {
+    (groups.size(l), groups.globals(l).len())
+}
+
+impl GroupSystems {
+    pub fn new(groups: &GroupStructure) -> Self {
+        let mut segment_ptr = Vec::with_capacity(groups.group_count() + 1);
+        segment_ptr.push(0);
+        for l in 0..groups.group_count() {
+            let (k, q) = dimensions(groups, l);
+            segment_ptr.push(segment_ptr[l] + section_lengths(k, q).iter().sum::<usize>());
+        }
+        let len = segment_ptr[groups.group_count()];
+        Self { segment_ptr, buffer: vec![0.0; len], accumulated: false }
     }
 
-    fn sections(&mut self) -> Sections<'_> {
-        let (k, w) = (self.k, self.q + 1);
-        let (normal, rest) = self.buffer.split_at_mut(k * k);
-        let (coupling, rest) = rest.split_at_mut(k * w);
-        let (factor, rest) = rest.split_at_mut(k * k);
-        let (solved, rest) = rest.split_at_mut(k * w);
-        let (gram, rest) = rest.split_at_mut(triangle_len(self.q));
-        let (schur, rest) = rest.split_at_mut(triangle_len(self.q));
-        let (schur_rhs, step) = rest.split_at_mut(self.q);
-        Sections { normal, coupling, factor, solved, gram, schur, schur_rhs, step }
+    /// The whole buffer (for gathers by [`Self::schur_start`] and [`Self::schur_rhs_start`]).
+    pub fn buffer(&self) -> &[f64] {
+        &self.buffer
     }
 
-    fn gram_offset(&self) -> usize {
-        2 * self.k * self.k + 2 * self.k * (self.q + 1)
+    /// Position in [`Self::buffer`] of group l's W − G_L with W = C_Lᵀ(D_L+μI)⁻¹C_L, upper
+    /// triangle packed row by row (valid after an elimination).
+    pub fn schur_start(&self, groups: &GroupStructure, l: usize) -> usize {
+        let (k, q) = dimensions(groups, l);
+        self.segment_ptr[l] + section_offset(k, q, GRAM)
     }
 
-    fn schur_offset(&self) -> usize {
-        self.gram_offset() + triangle_len(self.q)
+    /// Position in [`Self::buffer`] of group l's v = C_Lᵀ(D_L+μI)⁻¹g_L (valid after an
+    /// elimination).
+    pub fn schur_rhs_start(&self, groups: &GroupStructure, l: usize) -> usize {
+        let (k, q) = dimensions(groups, l);
+        self.segment_ptr[l] + section_offset(k, q, SCHUR_RHS)
     }
 
-    /// G_L = J_GᵀJ_G summed over the group's blocks, upper triangle packed row by row (valid
-    /// after [`Self::accumulate`]).
-    pub fn gram(&self) -> &[f64] {
-        let start = self.gram_offset();
-        &self.buffer[start..start + triangle_len(self.q)]
+    /// The diagonal of group l's G_L = J_GᵀJ_G, in the order of its globals (valid after an
+    /// accumulation without elimination).
+    pub fn gram_diagonal<'a>(&'a self, groups: &GroupStructure, l: usize) -> impl Iterator<Item = f64> + 'a {
+        let (k, q) = dimensions(groups, l);
+        let gram = self.segment_ptr[l] + section_offset(k, q, GRAM);
+        (0..q).map(move |i| self.buffer[gram + packed_upper_index(i, i, q)])
     }
 
-    /// W − G_L with W = C_Lᵀ(D_L+μI)⁻¹C_L, upper triangle packed row by row (valid after
-    /// [`Self::eliminate`]).
-    pub fn schur(&self) -> &[f64] {
-        let start = self.schur_offset();
-        &self.buffer[start..start + triangle_len(self.q)]
+    /// Largest diagonal entry of any D_L (0 without groups; valid after an accumulation without
+    /// elimination).
+    pub fn max_diagonal(&self, groups: &GroupStructure) -> f64 {
+        (0..groups.group_count()).fold(0.0, |m: f64, l| {
+            let k = groups.size(l);
+            (0..k).fold(m, |m, i| m.max(self.buffer[self.segment_ptr[l] + i * k + i]))
+        })
     }
 
-    /// v = C_Lᵀ(D_L+μI)⁻¹g_L (valid after [`Self::eliminate`]).
-    pub fn schur_rhs(&self) -> &[f64] {
-        let start = self.schur_offset() + triangle_len(self.q);
-        &self.buffer[start..start + self.q]
+    /// Accumulates every group's D_L, C_L, G_L and g_L from its blocks' slots (in parallel) and,
+    /// if `mu` is given, eliminates it right away while its segment is in cache. Returns `false`
+    /// if an elimination fails.
+    pub fn accumulate(&mut self, blocks: &BlockStructure, groups: &GroupStructure, slots: &[f64], mu: Option<f64>) -> bool {
+        self.accumulated = mu.is_none();
+        let failed = try_for_each_segment(&mut self.buffer, &self.segment_ptr, &|l, segment| {
+            let (k, q) = dimensions(groups, l);
+            let mut s = sections(k, q, segment);
+            accumulate_kernel(k, q, &mut s, blocks, groups.blocks(l), slots);
+            mu.is_none_or(|mu| eliminate_kernel(k, q, &mut s, mu))
+        });
+        failed.is_none()
     }
 
-    /// h_L (valid after [`Self::back_substitute`]).
-    pub fn step(&self) -> &[f64] {
-        &self.buffer[self.buffer.len() - self.k..]
+    /// Factors every D_L + μI = LLᵀ, solves [Z | z] = L⁻¹[C_L | g_L] and forms W = ZᵀZ,
+    /// v = Zᵀz (in parallel), accumulating the systems from `slots` again first unless they are
+    /// fresh from [`Self::accumulate`] without μ. Returns `false` if a dense factorisation fails
+    /// (not numerically positive definite).
+    pub fn eliminate(&mut self, blocks: &BlockStructure, groups: &GroupStructure, slots: &[f64], mu: f64) -> bool {
+        if !self.accumulated {
+            return self.accumulate(blocks, groups, slots, Some(mu));
+        }
+        self.accumulated = false;
+        let failed = try_for_each_segment(&mut self.buffer, &self.segment_ptr, &|l, segment| {
+            let (k, q) = dimensions(groups, l);
+            let mut s = sections(k, q, segment);
+            eliminate_kernel(k, q, &mut s, mu)
+        });
+        failed.is_none()
     }
 
-    /// Accumulates D_L, C_L and G_L from the group's block Jacobians (in block order, rows in
-    /// order) and copies g_L from the full gradient.
-    pub fn accumulate(
-        &mut self,
-        l: usize,
-        blocks: &BlockStructure,
-        groups: &GroupStructure,
-        slots: &[f64],
-        gradient: &[f64],
-    ) {
-        let (k, q, w) = (self.k, self.q, self.q + 1);
-        let (mut row_locals, mut row_globals) = (std::mem::take(&mut self.row_locals), std::mem::take(&mut self.row_globals));
-        let s = self.sections();
-        s.normal.fill(0.0);
-        s.coupling.fill(0.0);
-        s.gram.fill(0.0);
-        for &b in groups.blocks(l) {
-            let b = b as usize;
-            let n = blocks.var_ptr[b + 1] - blocks.var_ptr[b];
-            let jacobian = blocks.jacobian(b, slots);
-            let (local_positions, local_offsets) = blocks.local_positions(b);
-            let global_positions = blocks.global_positions(b);
-            let coupling_index = blocks.coupling_index(b);
-            // A block of a group has at least one (local) variable, so n > 0.
-            for row in jacobian.chunks_exact(n) {
-                // Structural zeros (e.g. auxiliaries absent from a residual row, field values of
-                // uncrossed edges) add nothing: gather the row's nonzero entries first.
-                row_locals.clear();
-                row_locals.extend(local_positions.iter().zip(local_offsets).map(|(&p, &o)| (o, row[p as usize])).filter(|e| e.1 != 0.0));
-                row_globals.clear();
-                row_globals.extend(global_positions.iter().zip(coupling_index).map(|(&p, &i)| (i, row[p as usize])).filter(|e| e.1 != 0.0));
-                for &(oa, va) in &row_locals {
-                    let oa = oa as usize;
-                    let normal_row = &mut s.normal[oa * k..(oa + 1) * k];
-                    for &(oc, vc) in &row_locals {
-                        if oc as usize <= oa {
-                            normal_row[oc as usize] += va * vc;
+    /// h_L = −L⁻ᵀ(z + Z h_G) of every group (in parallel) from the reduced solution
+    /// `global_step`, into `local_step` (the local variables in order).
+    pub fn back_substitute(&self, groups: &GroupStructure, global_step: &[f64], local_step: &mut [f64]) {
+        try_for_each_segment(local_step, &groups.starts, &|l, step| {
+            let (k, q) = dimensions(groups, l);
+            let segment = &self.buffer[self.segment_ptr[l]..self.segment_ptr[l + 1]];
+            let w = q + 1;
+            let factor = &segment[..k * k];
+            let solved_start = section_offset(k, q, COUPLING);
+            let solved = &segment[solved_start..solved_start + k * w];
+            let globals = groups.globals(l);
+            for (h, z_row) in step.iter_mut().zip(solved.chunks_exact(w)) {
+                *h = z_row[w - 1] + globals.iter().zip(z_row).map(|(&v, z)| z * global_step[v as usize]).sum::<f64>();
+            }
+            // Backward substitution with Lᵀ: h'_i = (s_i − Σ_{p>i} L_pi h'_p) / L_ii, then h_L = −h'.
+            for i in (0..k).rev() {
+                let mut value = step[i];
+                for p in i + 1..k {
+                    value -= factor[p * k + i] * step[p];
+                }
+                step[i] = value / factor[i * k + i];
+            }
+            for h in step.iter_mut() {
+                *h = -*h;
+            }
+            true
+        });
+    }
+}
+
+/// D_L, C_L, G_L and g_L of one group from its blocks (in block order, rows in order). Only the
+/// group's blocks touch its variables, so g_L equals that part of the full gradient summed in
+/// block order.
+fn accumulate_kernel(k: usize, q: usize, s: &mut Sections<'_>, blocks: &BlockStructure, group_blocks: &[u32], slots: &[f64]) {
+    let w = q + 1;
+    s.normal.fill(0.0);
+    s.coupling.fill(0.0);
+    s.gram.fill(0.0);
+    for &b in group_blocks {
+        let b = b as usize;
+        let slot = blocks.slot(b, slots);
+        let n = slot.gradient.len();
+        let (local_positions, local_offsets) = blocks.local_positions(b);
+        for (&p, &o) in local_positions.iter().zip(local_offsets) {
+            s.coupling[o as usize * w + q] += slot.gradient[p as usize];
+        }
+        let global_positions = blocks.global_positions(b);
+        let coupling_index = blocks.coupling_index(b);
+        // The row's entries, scattered densely over the group's locals and globals; entries of
+        // the group's variables the block does not touch stay zero.
+        s.row_locals.fill(0.0);
+        s.row_globals.fill(0.0);
+        // A block of a group has at least one (local) variable, so n > 0.
+        for row in slot.jacobian.chunks_exact(n) {
+            for (&p, &o) in local_positions.iter().zip(local_offsets) {
+                s.row_locals[o as usize] = row[p as usize];
+            }
+            let mut any_global = false;
+            for (&p, &i) in global_positions.iter().zip(coupling_index) {
+                let value = row[p as usize];
+                s.row_globals[i as usize] = value;
+                any_global |= value != 0.0;
+            }
+            // Structural zeros (auxiliaries absent from a residual row, field values of uncrossed
+            // edges) add nothing and are skipped row by row.
+            for (a, &va) in s.row_locals.iter().enumerate() {
+                if va == 0.0 {
+                    continue;
+                }
+                for (d, &vc) in s.normal[a * k..a * k + a + 1].iter_mut().zip(s.row_locals.iter()) {
+                    *d += va * vc;
+                }
+                if any_global {
+                    for (c, &vg) in s.coupling[a * w..a * w + q].iter_mut().zip(s.row_globals.iter()) {
+                        *c += va * vg;
+                    }
+                }
+            }
+            if any_global {
+                let mut t = 0;
+                for (i, &vi) in s.row_globals.iter().enumerate() {
+                    if vi != 0.0 {
+                        for (g, &vj) in s.gram[t..t + q - i].iter_mut().zip(&s.row_globals[i..]) {
+                            *g += vi * vj;
                         }
                     }
-                    let coupling_row = &mut s.coupling[oa * w..(oa + 1) * w];
-                    for &(ig, vg) in &row_globals {
-                        coupling_row[ig as usize] += va * vg;
-                    }
-                }
-                for (a, &(ia, va)) in row_globals.iter().enumerate() {
-                    for &(ib, vb) in &row_globals[a..] {
-                        let (i, j) = if ia <= ib { (ia as usize, ib as usize) } else { (ib as usize, ia as usize) };
-                        s.gram[packed_upper_index(i, j, q)] += va * vb;
-                    }
+                    t += q - i;
                 }
             }
-        }
-        let local_gradient = &gradient[groups.starts[l]..groups.starts[l + 1]];
-        for (row, &g) in s.coupling.chunks_exact_mut(w).zip(local_gradient) {
-            row[w - 1] = g;
-        }
-        self.row_locals = row_locals;
-        self.row_globals = row_globals;
-    }
-
-    /// Largest diagonal entry of D_L.
-    pub fn max_diagonal(&self) -> f64 {
-        (0..self.k).fold(0.0, |m: f64, i| m.max(self.buffer[i * self.k + i]))
-    }
-
-    /// Factors D_L + μI = LLᵀ, solves [Z | z] = L⁻¹[C_L | g_L] and forms W = ZᵀZ, v = Zᵀz.
-    /// Returns `false` if the dense factorisation fails (not numerically positive definite).
-    pub fn eliminate(&mut self, mu: f64) -> bool {
-        let (k, q) = (self.k, self.q);
-        eliminate_kernel(k, q, &mut self.sections(), mu)
-    }
-
-    /// h_L = −L⁻ᵀ(z + Z h_G) from the reduced solution `global_step`.
-    pub fn back_substitute(&mut self, globals: &[u32], global_step: &[f64]) {
-        let (k, w) = (self.k, self.q + 1);
-        let s = self.sections();
-        for (h, z_row) in s.step.iter_mut().zip(s.solved.chunks_exact(w)) {
-            *h = z_row[w - 1] + globals.iter().zip(z_row).map(|(&v, z)| z * global_step[v as usize]).sum::<f64>();
-        }
-        // Backward substitution with Lᵀ: h'_i = (s_i − Σ_{p>i} L_pi h'_p) / L_ii, then h_L = −h'.
-        for i in (0..k).rev() {
-            let mut value = s.step[i];
-            for p in i + 1..k {
-                value -= s.factor[p * k + i] * s.step[p];
-            }
-            s.step[i] = value / s.factor[i * k + i];
-        }
-        for h in s.step.iter_mut() {
-            *h = -*h;
         }
     }
 }
 
-/// [`GroupSystem::eliminate`] for k local and q global variables.
+/// [`GroupSystems::eliminate`] of one group (k local and q global variables).
 fn eliminate_kernel(k: usize, q: usize, s: &mut Sections<'_>, mu: f64) -> bool {
     let w = q + 1;
-    if !cholesky_lower(s.normal, mu, s.factor, k) {
+    if !cholesky_lower_in_place(s.normal, mu, k) {
         return false;
     }
-    // Forward substitution, row by row: Z_i = (B_i − Σ_{p<i} L_ip Z_p) / L_ii.
-    s.solved.copy_from_slice(s.coupling);
+    let factor = &*s.normal;
+    // Forward substitution in place, row by row: Z_i = (B_i − Σ_{p<i} L_ip Z_p) / L_ii.
     for i in 0..k {
-        let (done, rest) = s.solved.split_at_mut(i * w);
+        let (done, rest) = s.coupling.split_at_mut(i * w);
         let current = &mut rest[..w];
-        for (p, &lip) in s.factor[i * k..i * k + i].iter().enumerate() {
+        for (p, &lip) in factor[i * k..i * k + i].iter().enumerate() {
             for (c, &z) in current.iter_mut().zip(&done[p * w..(p + 1) * w]) {
                 *c -= lip * z;
             }
         }
-        let diagonal = s.factor[i * k + i];
+        let diagonal = factor[i * k + i];
         for c in current.iter_mut() {
             *c /= diagonal;
         }
     }
-    // W − G_L = ZᵀZ − G_L (upper, packed) and v = Zᵀz, summed over the rows of Z in order.
-    for (wij, &g) in s.schur.iter_mut().zip(s.gram.iter()) {
-        *wij = -g;
+    // W − G_L = ZᵀZ − G_L (upper, packed, over G_L) and v = Zᵀz, summed over the rows of Z in
+    // order.
+    for wij in s.gram.iter_mut() {
+        *wij = -*wij;
     }
     s.schur_rhs.fill(0.0);
-    for z_row in s.solved.chunks_exact(w) {
+    for z_row in s.coupling.chunks_exact(w) {
         let mut t = 0;
         for i in 0..q {
             let zi = z_row[i];
-            for (wij, &zj) in s.schur[t..t + q - i].iter_mut().zip(&z_row[i..q]) {
+            for (wij, &zj) in s.gram[t..t + q - i].iter_mut().zip(&z_row[i..q]) {
                 *wij += zi * zj;
             }
             t += q - i;
@@ -229,19 +300,20 @@ fn eliminate_kernel(k: usize, q: usize, s: &mut Sections<'_>, mu: f64) -> bool {
     true
 }
 
-/// Cholesky factor (lower, row-major k×k, into `factor`) of `normal + μI`, reading only the lower
-/// triangle of `normal`. Returns `false` on a non-positive or non-finite pivot.
-fn cholesky_lower(normal: &[f64], mu: f64, factor: &mut [f64], k: usize) -> bool {
+/// Cholesky factor L of `normal + μI` (row-major k×k), computed in place over the lower triangle
+/// of `normal`. Returns `false` on a non-positive or non-finite pivot (the matrix is then partly
+/// overwritten).
+fn cholesky_lower_in_place(normal: &mut [f64], mu: f64, k: usize) -> bool {
     for j in 0..k {
-        let (above, rest) = factor.split_at_mut(j * k);
+        let (above, rest) = normal.split_at_mut(j * k);
         let row_j = &mut rest[..k];
         for i in 0..j {
             let row_i = &above[i * k..i * k + i];
             let dot: f64 = row_i.iter().zip(&row_j[..i]).map(|(a, b)| a * b).sum();
-            row_j[i] = (normal[j * k + i] - dot) / above[i * k + i];
+            row_j[i] = (row_j[i] - dot) / above[i * k + i];
         }
         let squares: f64 = row_j[..j].iter().map(|v| v * v).sum();
-        let pivot = normal[j * k + j] + mu - squares;
+        let pivot = row_j[j] + mu - squares;
         if !(pivot > 0.0 && pivot.is_finite()) {
             return false;
         }

@@ -2,10 +2,10 @@
 //! numeric factorisation per damped trial, all workspaces preallocated; sequential (`Par::Seq`)
 //! so results are bit-identical for any thread count.
 //!
-//! The fill-reducing permutation is applied to the sparsity pattern once: the matrix is handed to
-//! faer already permuted (lower triangle, the side its supernodal factorisation works on), so a
-//! numeric factorisation only scatters the values through a precomputed map instead of
-//! re-permuting the whole matrix on every trial.
+//! The fill-reducing permutation is applied to the sparsity pattern once: the caller writes the
+//! values straight into faer's permuted storage (lower triangle, the side its supernodal
+//! factorisation works on), guided by the original position of every stored entry, so no trial
+//! re-permutes or copies the whole matrix.
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
 use faer::linalg::cholesky::llt::factor::LltRegularization;
 use faer::sparse::linalg::amd;
@@ -20,8 +20,8 @@ use super::SolverError;
 pub(crate) struct SparseCholesky {
     /// Lower triangle of P S Pᵀ (CSC, sorted rows).
     permuted_pattern: SymbolicSparseColMat<usize>,
-    /// `permuted_values[value_map[i]]` = value `i` of the caller's upper pattern.
-    value_map: Vec<usize>,
+    /// `permuted_values[p]` = value `original_position[p]` of the caller's upper pattern.
+    original_position: Vec<usize>,
     permuted_values: Vec<f64>,
     /// `new_index[i]`: position of variable `i` in the permuted order.
     new_index: Vec<usize>,
@@ -73,10 +73,6 @@ impl SparseCholesky {
         .map_err(|e| failed(&e))?;
         let lower_order = counting_sort(n, &low, counting_sort(n, &high, by_low));
         let permuted_pattern = triangle_pattern(n, lower_order.iter().map(|&e| (low[e], high[e])));
-        let mut value_map = vec![0usize; nnz];
-        for (position, &original) in lower_order.iter().enumerate() {
-            value_map[original] = position;
-        }
         let req = StackReq::or(
             symbolic.factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default()),
             symbolic.solve_in_place_scratch::<f64>(1, Par::Seq),
@@ -85,7 +81,7 @@ impl SparseCholesky {
         let factor = vec![0.0; symbolic.len_val()];
         Ok(Self {
             permuted_pattern,
-            value_map,
+            original_position: lower_order,
             permuted_values: vec![0.0; nnz],
             new_index,
             permuted_rhs: vec![0.0; n],
@@ -95,12 +91,17 @@ impl SparseCholesky {
         })
     }
 
-    /// Numeric factorisation of the matrix with the analysed pattern and upper values `values`.
-    /// Returns `false` if it is not numerically positive definite.
-    pub fn factorize(&mut self, values: &[f64]) -> bool {
-        for (&target, &value) in self.value_map.iter().zip(values) {
-            self.permuted_values[target] = value;
-        }
+    /// For each value of the permuted storage, its position in the caller's upper pattern.
+    pub fn original_positions(&self) -> &[usize] {
+        &self.original_position
+    }
+
+    /// Numeric factorisation of the matrix with the analysed pattern. `fill(values)` writes the
+    /// matrix in the permuted storage: `values[p]` is the entry at position
+    /// [`Self::original_positions`]`[p]` of the caller's upper pattern. Returns `false` if it is
+    /// not numerically positive definite.
+    pub fn factorize_with(&mut self, fill: impl FnOnce(&mut [f64])) -> bool {
+        fill(&mut self.permuted_values);
         let matrix = SparseColMatRef::new(self.permuted_pattern.as_ref(), &self.permuted_values);
         self.symbolic
             .factorize_numeric_llt(

@@ -50,6 +50,14 @@ pub(crate) struct BlockSlot<'a> {
     pub gram: &'a mut [f64],
 }
 
+/// Read-only views of one block's evaluation slot.
+pub(crate) struct BlockSlotRef<'a> {
+    pub residuals: &'a [f64],
+    pub jacobian: &'a [f64],
+    pub gradient: &'a [f64],
+    pub gram: &'a [f64],
+}
+
 impl BlockStructure {
     pub fn block_count(&self) -> usize {
         self.group.len()
@@ -86,12 +94,15 @@ impl BlockStructure {
         BlockSlot { residuals, jacobian, gradient, gram }
     }
 
-    /// Jacobian of block `b` (row-major) within the whole slot buffer.
-    pub fn jacobian<'a>(&self, b: usize, slots: &'a [f64]) -> &'a [f64] {
+    /// Read-only views of block `b`'s slot within the whole slot buffer.
+    pub fn slot<'a>(&self, b: usize, slots: &'a [f64]) -> BlockSlotRef<'a> {
         let m = self.residual_count(b);
         let n = self.var_ptr[b + 1] - self.var_ptr[b];
-        let start = self.slot_ptr[b] + m;
-        &slots[start..start + m * n]
+        let slot = &slots[self.slot_ptr[b]..self.slot_ptr[b + 1]];
+        let (residuals, rest) = slot.split_at(m);
+        let (jacobian, rest) = rest.split_at(m * n);
+        let (gradient, gram) = rest.split_at(n);
+        BlockSlotRef { residuals, jacobian, gradient, gram }
     }
 }
 
