@@ -4,6 +4,9 @@
  *
  * What it covers: the whole pipeline of the paper, one handle per stage.
  *   LmlMesh    a triangle mesh (a topological disk, possibly with holes);
+ *   LmlGuides  guide P-curves traced from the boundary (Sec. 3.2.1): polylines, their
+ *              points on mesh edges, why each stopped, crossings; with
+ *              lml_field_values_from_guides (or _from_strokes) they give the initial field;
  *   LmlField   a field solver session: a scalar field whose level curves form a
  *              pseudo-geodesic, geodesic or asymptotic family, stepped until converged,
  *              saved and restored;
@@ -12,7 +15,8 @@
  *   LmlStrips  rectifying developable strips along the curves: planar quads (vertices +
  *              quad indices + per-strip offsets), centre lines, rulings, flat unrollings,
  *              per-strip and overall quality measures (paper Table 4) and warning flags.
- * A typical run: lml_mesh_new -> lml_field_new -> lml_field_step until
+ * A typical run: lml_mesh_new -> [lml_boundary_starts -> lml_guides_trace ->
+ * lml_field_values_from_guides ->] lml_field_new -> lml_field_step until
  * LML_STATUS_CONVERGED -> lml_curves_new_uniform -> lml_strips_new -> read the arrays ->
  * free the handles (in any order: no handle depends on another being alive).
  *
