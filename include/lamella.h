@@ -64,6 +64,11 @@
 // `lml_abi_version()` at start-up to detect a header / library mismatch.
 #define LML_ABI_VERSION 1
 
+// The default corner threshold in degrees: a boundary vertex where the boundary turns by at
+// least this much splits a loop into segments. (A literal, so that the header can show it;
+// equal to the library's default.)
+#define LML_DEFAULT_CORNER_TURN_DEGREES 30.0
+
 // Result of an `lml_*` call. `LML_STATUS_OK`, `LML_STATUS_MORE` and `LML_STATUS_CONVERGED`
 // are successes (≥ 0); every failure is negative, and `lml_last_error_message()` then says
 // what went wrong and names the offending element (vertex, face, byte offset, argument).
@@ -99,6 +104,13 @@ enum LmlStatus
   LML_STATUS_CORRUPT_DATA = -7,
   // A bug inside the library (e.g. a caught panic). Please report it with the message.
   LML_STATUS_INTERNAL_ERROR = -8,
+  // The guide curves cannot initialise a field: fewer than two, their first and last start at
+  // one point, or (`lml_guides_check_order`) they intersect or are out of order; the message
+  // names the curves.
+  LML_STATUS_INVALID_GUIDES = -9,
+  // The sketched strokes cannot initialise a field: fewer than two, too short, too far from
+  // the surface, or crossing; the message names the stroke and point.
+  LML_STATUS_INVALID_STROKES = -10,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -117,6 +129,11 @@ typedef struct LmlCurves LmlCurves;
 // variables and the solver state. Create it with `lml_field_new` or `lml_field_load`, release
 // it with `lml_field_free`.
 typedef struct LmlField LmlField;
+
+// Guide curves (opaque): traced polylines on mesh edges (edge points and positions), why
+// each stopped, and the mesh they were traced on. Create it with `lml_guides_trace`, release
+// it with `lml_guides_free`. Immutable once created.
+typedef struct LmlGuides LmlGuides;
 
 // A validated triangle mesh (opaque). Create it with `lml_mesh_new` or `lml_mesh_read_obj`,
 // release it with `lml_mesh_free`. Immutable once created.
@@ -301,6 +318,42 @@ typedef struct LmlSkippedCurve {
   LmlStripWarnings warnings;
 } LmlSkippedCurve;
 
+// Limits and tolerances of `lml_guides_trace`. Fill it with `lml_trace_options_default`, then
+// change fields as needed. Lengths are in the mesh's unit, angles in degrees.
+typedef struct LmlTraceOptions {
+  // Stop a curve once it is at least this long; `INFINITY` for no limit (default). > 0.
+  double max_length;
+  // Stop a curve once it has this many points (≥ 2; default 100000).
+  uint64_t max_points;
+  // A root of the tracing equation (paper Eq. 4) is accepted if the angle it realises is
+  // within this many degrees of θ (0 < tolerance < 90; default 2).
+  double angle_tolerance_degrees;
+  // Sharpest accepted turn between consecutive segments in degrees (0 < turn ≤ 90; default
+  // 45): a much sharper turn would jump onto another curve family.
+  double max_turn_degrees;
+} LmlTraceOptions;
+
+// The point `(1 − t)·p_a + t·p_b` on the mesh edge `[a, b]` (zero-based vertex indices).
+typedef struct LmlEdgePoint {
+  uint32_t a;
+  uint32_t b;
+  double t;
+} LmlEdgePoint;
+
+// Why the tracing of a guide curve stopped (one of the `LML_TRACE_STOP_*` constants).
+typedef uint32_t LmlTraceStop;
+
+// Where two traced segments meet. Segment `k` of a curve joins its points `k` and `k + 1`; a
+// self-intersection has `first_curve == second_curve`.
+typedef struct LmlCrossing {
+  uint32_t first_curve;
+  uint32_t second_curve;
+  uint32_t first_segment;
+  uint32_t second_segment;
+  // The meeting point (x, y, z).
+  double position[3];
+} LmlCrossing;
+
 // Pseudo-geodesics: the binormal keeps the angle `theta_degrees` to the surface normal
 // (`E_angle`, paper Eq. 8–10).
 #define LML_FAMILY_PSEUDO_GEODESIC 0
@@ -336,6 +389,19 @@ typedef struct LmlSkippedCurve {
 // (counted in `LmlStripMetrics::flipped_quads`).
 #define LML_STRIP_WARNING_FLIPPED_QUADS (1 << 7)
 
+// The last point lies on the mesh boundary: the curve runs from boundary to boundary.
+#define LML_TRACE_STOP_BOUNDARY 0
+
+// No next point satisfies the tracing equation: the curve family does not continue here
+// (a singular configuration).
+#define LML_TRACE_STOP_NO_CANDIDATE 1
+
+// The curve reached `LmlTraceOptions.max_length`.
+#define LML_TRACE_STOP_LENGTH_LIMIT 2
+
+// The curve reached `LmlTraceOptions.max_points`.
+#define LML_TRACE_STOP_POINT_LIMIT 3
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -366,10 +432,10 @@ const char *lml_last_error_message(void);
 // (the panic message may be printed to stderr).
 LmlStatus lml_debug_trigger_panic(void);
 
-// The number of handles (`LmlMesh`, `LmlField`, `LmlCurves` and `LmlStrips` together) created
-// and not yet freed in this process, over all threads: lets bindings and the C test harness
-// check that every handle is released (e.g. by a garbage collector's finalizers). Has no other
-// effect.
+// The number of handles (`LmlMesh`, `LmlField`, `LmlCurves`, `LmlStrips` and `LmlGuides`
+// together) created and not yet freed in this process, over all threads: lets bindings and the
+// C test harness check that every handle is released (e.g. by a garbage collector's
+// finalizers). Has no other effect.
 size_t lml_debug_live_handles(void);
 
 // Creates a mesh from flat arrays and validates it.
@@ -823,6 +889,240 @@ LmlStatus lml_strips_skipped(const struct LmlStrips *strips,
                              struct LmlSkippedCurve *out,
                              size_t capacity,
                              size_t *needed);
+
+// Writes the default tracing options to `*out`: no length limit, 100000 points, 2° tolerance,
+// turns up to 45°.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL `out`).
+LmlStatus lml_trace_options_default(struct LmlTraceOptions *out);
+
+// Writes to `*count` the number of segments of boundary loop `loop_index` (loops numbered from
+// 0, the loops of a disk with holes in the library's order) when split at its corners:
+// vertices where the boundary turns by at least `corner_turn_degrees` (in [0, 180], e.g.
+// `LML_DEFAULT_CORNER_TURN_DEGREES`). A loop without corners is one closed segment; a
+// rectangular patch has 4.
+//
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `loop_index` not a
+// loop of the mesh (the loop count is given), `corner_turn_degrees` not finite or outside
+// [0, 180]).
+LmlStatus lml_boundary_segment_count(const struct LmlMesh *mesh,
+                                     uint32_t loop_index,
+                                     double corner_turn_degrees,
+                                     size_t *count);
+
+// Copies `count` start points on segment `segment_index` of boundary loop `loop_index` (split
+// at corners as in `lml_boundary_segment_count`), evenly spaced by arc length: at
+// `(i + 1/2)·L / count` from the segment's first corner, so neighbours are `L / count` apart
+// and the corners are avoided. Each point lies on a boundary edge given in loop order (the
+// interior on the left, seen from the side the normals point to); pass them to
+// `lml_guides_trace`.
+//
+// Two-call pattern: `*needed` is always set to `count` (when the arguments are valid); if
+// `out` is NULL or `capacity` (in points) is smaller, nothing is copied and
+// `LML_STATUS_BUFFER_TOO_SMALL` is returned. The buffer stays owned by the caller.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_BUFFER_TOO_SMALL`; `LML_STATUS_INVALID_ARGUMENT` (NULL
+// pointer, `loop_index` or `segment_index` out of range (the count is given),
+// `corner_turn_degrees` not in [0, 180], `count` 0).
+LmlStatus lml_boundary_starts(const struct LmlMesh *mesh,
+                              uint32_t loop_index,
+                              double corner_turn_degrees,
+                              uint32_t segment_index,
+                              uint32_t count,
+                              struct LmlEdgePoint *out,
+                              size_t capacity,
+                              size_t *needed);
+
+// Writes to `*out` the start point at arc-length parameter `s` ∈ [0, 1] along boundary loop
+// `loop_index`, measured from the loop's first vertex in loop order (`s = 1` is back at the
+// first vertex); its edge is given in loop order.
+//
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `loop_index` out of
+// range (the loop count is given), `s` not finite or outside [0, 1]).
+LmlStatus lml_boundary_start_at(const struct LmlMesh *mesh,
+                                uint32_t loop_index,
+                                double s,
+                                struct LmlEdgePoint *out);
+
+// Writes to `*out` the point of the mesh boundary (any loop) closest in space to `point`
+// (3 doubles x, y, z, e.g. where a designer clicked); its edge is a boundary edge given in
+// loop order. Ties go to the first boundary edge in loop order.
+//
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, a NaN or infinite
+// coordinate).
+LmlStatus lml_boundary_start_nearest(const struct LmlMesh *mesh,
+                                     const double *point,
+                                     struct LmlEdgePoint *out);
+
+// Traces one discrete P-curve (pseudo-geodesic) per start point, in order: curve `i` starts at
+// `starts[i]`, so it becomes the level `F = i` of `lml_field_values_from_guides`.
+//
+// - `mesh`: the surface; the guides keep their own copy of it, so it may be freed afterwards.
+// - `starts`: `count` (≥ 1) points on boundary edges (either orientation of the edge), e.g.
+//   from `lml_boundary_starts`. Copied.
+// - `theta_degrees`: θ ∈ [0, 180], the angle between the curve's binormal and the surface
+//   normal (paper Eq. 2): 90 gives geodesics, 0 or 180 asymptotic curves; θ and 180 − θ are
+//   the two mirror families. θ is measured with the side vector `n × t` pointing to the left of
+//   the travel direction (seen from the side the normals point to).
+// - `start_angle_degrees`: α ∈ (0, 180), the tangent at the start against the boundary
+//   direction that has the interior on its left, turned into the surface (90: perpendicular).
+// - `options`: limits and tolerances; NULL for the defaults of `lml_trace_options_default`.
+//   Copied.
+// - `out`: receives the new guides, owned by the caller (release with `lml_guides_free`); set
+//   to NULL on failure.
+//
+// Each curve runs until it reaches the boundary, no next point exists, or a limit of
+// `options` (see `lml_guides_stops`); it has at least two points.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `count` 0, an option
+// out of range (named), θ or α out of range, or start `i` invalid: a vertex out of range, not a
+// boundary edge, `t` outside [0, 1], or no first segment leaves it at α into the surface; the
+// message names `starts[i]`).
+LmlStatus lml_guides_trace(const struct LmlMesh *mesh,
+                           const struct LmlEdgePoint *starts,
+                           size_t count,
+                           double theta_degrees,
+                           double start_angle_degrees,
+                           const struct LmlTraceOptions *options,
+                           struct LmlGuides **out);
+
+// Releases guides. NULL is accepted and ignored. The handle must not be used (or freed) again.
+void lml_guides_free(struct LmlGuides *guides);
+
+// Writes the number of curves `c` (the number of start points) to `*count`.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_guides_count(const struct LmlGuides *guides, size_t *count);
+
+// Copies the offset table of the curves: `c + 1` values starting at 0; curve `i` has the points
+// `offsets[i] .. offsets[i + 1]` (counted in points) of `lml_guides_points` and
+// `lml_guides_edge_points`, so `offsets[c]` is the total point count `k`.
+//
+// Two-call pattern: `*needed` is always set to `c + 1`; if `out` is NULL or `capacity` is
+// smaller, nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned. The buffer stays
+// owned by the caller.
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_guides_offsets(const struct LmlGuides *guides,
+                             size_t *out,
+                             size_t capacity,
+                             size_t *needed);
+
+// Copies the points of all curves, one after another in travel direction (from the start
+// point): `3k` doubles in the mesh's units, point `p` at `out[3p..3p+3]`.
+//
+// Two-call pattern as `lml_guides_offsets` (`capacity` and `*needed` count doubles).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_guides_points(const struct LmlGuides *guides,
+                            double *out,
+                            size_t capacity,
+                            size_t *needed);
+
+// Copies the points of all curves as edge points (`k` of them, laid out as
+// `lml_guides_points`), each edge given as `[a, b]` with `a < b` and `t` measured from `a`.
+//
+// Two-call pattern as `lml_guides_offsets` (`capacity` and `*needed` count points).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_guides_edge_points(const struct LmlGuides *guides,
+                                 struct LmlEdgePoint *out,
+                                 size_t capacity,
+                                 size_t *needed);
+
+// Copies why the tracing of each curve stopped: `c` `LML_TRACE_STOP_*` codes.
+//
+// Two-call pattern as `lml_guides_offsets` (`*needed` is `c`).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_guides_stops(const struct LmlGuides *guides,
+                           LmlTraceStop *out,
+                           size_t capacity,
+                           size_t *needed);
+
+// Copies the length of each curve (its polyline, in the mesh's units): `c` doubles.
+//
+// Two-call pattern as `lml_guides_offsets` (`*needed` is `c`).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_guides_lengths(const struct LmlGuides *guides,
+                             double *out,
+                             size_t capacity,
+                             size_t *needed);
+
+// Copies where the curves meet: first the crossings between different curves
+// (`first_curve < second_curve`), then the self-intersections (`first_curve == second_curve`,
+// `first_segment < second_segment`), each sorted by curves, then segments. Segments that touch
+// count as meeting; consecutive segments of one curve do not.
+//
+// Two-call pattern as `lml_guides_offsets` (`capacity` and `*needed` count crossings;
+// `*needed` may be 0, and then `out` may be NULL and the call succeeds).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_guides_crossings(const struct LmlGuides *guides,
+                               struct LmlCrossing *out,
+                               size_t capacity,
+                               size_t *needed);
+
+// Checks that the curves are ordered like the level sets `F = 0, 1, …, c − 1` of one function,
+// as `lml_field_values_from_guides` requires: no curve intersects itself, no two cross or
+// touch, and each inner curve runs from the boundary loop of its start back to that loop and
+// separates its two neighbours (curve `i` lies between curves `i − 1` and `i + 1`).
+//
+// Returns `LML_STATUS_OK` (ordered); `LML_STATUS_INVALID_GUIDES` (the message names the first
+// defect found and the curve indices, checked in the order above); `LML_STATUS_INVALID_ARGUMENT`
+// (NULL `guides`).
+LmlStatus lml_guides_check_order(const struct LmlGuides *guides);
+
+// Computes the initial field of ordered guide curves (paper Eq. 5–7, weights λ0 = 3 for the
+// curves and λ1 = 1 for fairness): a smooth field whose level set `F = i` follows guide curve
+// `i`, and the matching gradient target.
+//
+// - `mesh`: the surface the guides were traced on (the same vertices and edges).
+// - `guides`: at least two curves, ordered (see `lml_guides_check_order`; not checked here).
+// - `out`: one double per vertex. Two-call pattern: `*needed` is set to the vertex count; if
+//   `out` is NULL or `capacity` (in doubles) is smaller, nothing is copied and
+//   `LML_STATUS_BUFFER_TOO_SMALL` is returned (the field is computed either way: for a cheap
+//   size query use `lml_mesh_vertex_count`). The buffer stays owned by the caller.
+// - `gradient_target`: may be NULL; on `LML_STATUS_OK` receives the mean ‖∇F‖ between the first
+//   and the last guide (field units per mesh length unit), to put into
+//   `LmlFieldParams.gradient_target` so that the optimisation keeps the spacing of the guides.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_BUFFER_TOO_SMALL`; `LML_STATUS_INVALID_GUIDES` (fewer
+// than two curves, or the first and the last curve start at the same point);
+// `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, guides traced on another mesh: the vertex count
+// differs, or a guide point (curve and point named) lies on no edge of `mesh`);
+// `LML_STATUS_SINGULAR_FIELD` (the linear system is singular).
+LmlStatus lml_field_values_from_guides(const struct LmlMesh *mesh,
+                                       const struct LmlGuides *guides,
+                                       double *out,
+                                       size_t capacity,
+                                       size_t *needed,
+                                       double *gradient_target);
+
+// Computes a smooth field whose level sets follow sketched strokes (paper Sec. 3.2.2,
+// "Interactive steering", Fig. 14 b), about one mean edge length apart, increasing from the
+// earlier to the later of the two strokes whose starts lie farthest apart; and the angle θ its
+// level sets make with the surface along the strokes, the target to optimise for.
+//
+// - `points`: `point_count` stroke points (3 doubles each, mesh units), each within one mean
+//   edge length of the surface; the points of all strokes one after another.
+// - `offsets`: `stroke_count + 1` values cutting `points` into strokes (stroke `s` is points
+//   `offsets[s] .. offsets[s + 1]`): first 0, last `point_count`, non-decreasing. Copied.
+// - `out`: one double per vertex; two-call pattern as `lml_field_values_from_guides` (the field
+//   is computed either way).
+// - `theta_degrees`: may be NULL (then θ is not estimated); on `LML_STATUS_OK` receives the mean
+//   signed angle θ ∈ [0, 180] between the level-set binormals and the surface normals at the
+//   strokes' middle halves, for `lml_field_params_default`.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_BUFFER_TOO_SMALL`; `LML_STATUS_INVALID_STROKES` (fewer
+// than two strokes, a stroke with fewer than two points (or in fewer than two triangles), a point
+// farther than a mean edge length from the surface, two strokes through one triangle: they
+// cross; the message names stroke and point); `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, a bad
+// offset (named), a NaN or infinite coordinate (stroke and point named));
+// `LML_STATUS_SINGULAR_FIELD` (a linear system is singular, or θ cannot be measured: no stroke
+// passes a regular interior vertex in its middle half).
+LmlStatus lml_field_values_from_strokes(const struct LmlMesh *mesh,
+                                        const double *points,
+                                        size_t point_count,
+                                        const size_t *offsets,
+                                        size_t stroke_count,
+                                        double *out,
+                                        size_t capacity,
+                                        size_t *needed,
+                                        double *theta_degrees);
 
 #ifdef __cplusplus
 }  // extern "C"

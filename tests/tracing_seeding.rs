@@ -4,7 +4,9 @@
 mod tracing_support;
 
 use lamella::mesh::{EdgePoint, TriMesh, Vec3};
-use lamella::tracing::{boundary_segments, boundary_start, evenly_spaced_starts, TraceError, DEFAULT_CORNER_TURN_DEGREES};
+use lamella::tracing::{
+    boundary_segments, boundary_start, evenly_spaced_starts, nearest_boundary_point, TraceError, DEFAULT_CORNER_TURN_DEGREES,
+};
 use tracing_support::{cylinder, saddle};
 
 fn position(mesh: &TriMesh, p: &EdgePoint) -> Vec3 {
@@ -116,4 +118,53 @@ fn bad_seeding_requests_are_named() {
     for error in [TraceError::ZeroCurves, TraceError::SegmentOutOfRange { index: 4, count: 4 }] {
         assert!(!error.to_string().is_empty());
     }
+}
+
+/// The distance from `q` to the boundary, by brute force: every boundary edge sampled at 2001 points.
+fn sampled_boundary_distance(mesh: &TriMesh, q: &Vec3) -> f64 {
+    let pos = mesh.positions();
+    let mut best = f64::INFINITY;
+    for boundary_loop in mesh.boundary_loops() {
+        for (k, &a) in boundary_loop.iter().enumerate() {
+            let b = boundary_loop[(k + 1) % boundary_loop.len()];
+            for i in 0..=2000 {
+                let p = pos[a as usize].lerp(&pos[b as usize], i as f64 / 2000.0);
+                best = best.min((p - q).norm());
+            }
+        }
+    }
+    best
+}
+
+#[test]
+fn nearest_boundary_point_finds_the_clicked_boundary_point() {
+    let mesh = cylinder(1000, 5);
+    let boundary_edges: Vec<[u32; 2]> = mesh
+        .boundary_loops()
+        .iter()
+        .flat_map(|l| (0..l.len()).map(move |k| [l[k], l[(k + 1) % l.len()]]))
+        .collect();
+    // A boundary point moved off the surface along the radial direction made perpendicular to
+    // its boundary edge has itself as nearest boundary point.
+    for s in [0.03, 0.2, 0.37, 0.61, 0.88] {
+        let on = boundary_start(&mesh, 0, s).expect("valid parameter");
+        let p = position(&mesh, &on);
+        let [a, b] = on.edge.map(|v| mesh.positions()[v as usize]);
+        let along = (b - a).normalize();
+        let radial = Vec3::new(p.x, p.y, 0.0);
+        let off = (radial - radial.dot(&along) * along).normalize();
+        let nearest = nearest_boundary_point(&mesh, p + 0.3 * off).expect("finite point");
+        assert!(boundary_edges.contains(&nearest.edge), "{nearest:?} is not on a boundary edge in loop order");
+        assert!((0.0..=1.0).contains(&nearest.t));
+        assert!((position(&mesh, &nearest) - p).norm() < 1e-9, "s = {s}");
+    }
+    // Points inside and around the patch: no sampled boundary point is closer.
+    for q in [Vec3::new(9.0, 3.0, 7.0), Vec3::new(0.0, 12.0, -2.0), Vec3::new(-20.0, 5.0, 30.0), Vec3::new(0.0, 0.0, 7.5)] {
+        let nearest = nearest_boundary_point(&mesh, q).expect("finite point");
+        let d = (position(&mesh, &nearest) - q).norm();
+        let sampled = sampled_boundary_distance(&mesh, &q);
+        assert!(d <= sampled + 1e-12 && d > sampled - 1e-2, "{q:?}: {d} vs sampled {sampled}");
+    }
+    assert_eq!(nearest_boundary_point(&mesh, Vec3::new(f64::NAN, 0.0, 0.0)), Err(TraceError::NonFinitePoint));
+    assert_eq!(nearest_boundary_point(&mesh, Vec3::new(0.0, f64::INFINITY, 0.0)), Err(TraceError::NonFinitePoint));
 }

@@ -3,9 +3,11 @@
 use super::status::LmlStatus;
 use crate::curves::CurveError;
 use crate::field::FieldError;
+use crate::initialisation::InitialisationError;
 use crate::mesh::MeshError;
 use crate::solver::SolverError;
 use crate::strips::StripError;
+use crate::tracing::TraceError;
 
 /// Why an `lml_*` call failed.
 #[derive(Debug)]
@@ -73,5 +75,27 @@ impl From<StripError> for Failure {
     /// Every strip error is a parameter out of range.
     fn from(e: StripError) -> Failure {
         Failure::new(LmlStatus::InvalidArgument, format!("argument `params`: {e}"))
+    }
+}
+
+impl From<TraceError> for Failure {
+    /// Every tracing and seeding error is an input out of range; the message names it.
+    fn from(e: TraceError) -> Failure {
+        Failure::new(LmlStatus::InvalidArgument, e.to_string())
+    }
+}
+
+impl From<InitialisationError> for Failure {
+    fn from(e: InitialisationError) -> Failure {
+        use InitialisationError::*;
+        let status = match &e {
+            TooFewGuideCurves { .. } | EmptyGuideCurve { .. } | CoincidentGuideStarts => LmlStatus::InvalidGuides,
+            GuideVertexOutOfRange { .. } | GuideNotAnEdge { .. } | GuideParameterOutOfRange { .. } => LmlStatus::InvalidArgument,
+            TooFewStrokes { .. } | StrokeTooShort { .. } | StrokePointOffSurface { .. } | CrossingStrokes { .. } => LmlStatus::InvalidStrokes,
+            NonFiniteStrokePoint { .. } | InvalidOption { .. } => LmlStatus::InvalidArgument,
+            SingularSystem { .. } | NoMeasurableAngle => LmlStatus::SingularField,
+            Field(field_error) => return Failure::from(field_error.clone()),
+        };
+        Failure::new(status, e.to_string())
     }
 }

@@ -10,7 +10,8 @@
 //! The ABI covers the whole pipeline: meshes ([`LmlMesh`]), field solver sessions
 //! ([`LmlField`]), level curves ([`LmlCurves`]) and rectifying strips with their unrollings and
 //! metrics ([`LmlStrips`]), each a handle module with `lml_<handle>_new` / `_free` and two-call
-//! array outputs.
+//! array outputs, and the initialisation of Sec. 3.2.2: boundary start points, traced guide
+//! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes.
 //!
 //! The header is generated from this module by cbindgen (configuration in `cbindgen.toml`);
 //! `tests/ffi_header.rs` fails when the committed header is stale and rewrites it when
@@ -39,11 +40,20 @@ mod curves;
 mod strip_params;
 mod strip_metrics;
 mod strips;
+mod edge_point;
+mod trace_options;
+mod boundary_starts;
+mod guides;
+mod initial_fields;
 
+pub use boundary_starts::*;
 pub use curves::*;
+pub use edge_point::*;
 pub use field::*;
 pub use field_params::*;
+pub use guides::*;
 pub use guard::lml_debug_trigger_panic;
+pub use initial_fields::*;
 pub use last_error::lml_last_error_message;
 pub use live_handles::lml_debug_live_handles;
 pub use mesh::*;
@@ -53,6 +63,7 @@ pub use status::*;
 pub use strip_metrics::*;
 pub use strip_params::*;
 pub use strips::*;
+pub use trace_options::*;
 pub use version::*;
 
 #[cfg(test)]
@@ -67,5 +78,6 @@ mod tests {
         movable::<LmlField>();
         movable::<LmlCurves>();
         movable::<LmlStrips>();
+        movable::<LmlGuides>();
     }
 }

@@ -35,10 +35,17 @@ pub enum LmlStatus {
     CorruptData = -7,
     /// A bug inside the library (e.g. a caught panic). Please report it with the message.
     InternalError = -8,
+    /// The guide curves cannot initialise a field: fewer than two, their first and last start at
+    /// one point, or (`lml_guides_check_order`) they intersect or are out of order; the message
+    /// names the curves.
+    InvalidGuides = -9,
+    /// The sketched strokes cannot initialise a field: fewer than two, too short, too far from
+    /// the surface, or crossing; the message names the stroke and point.
+    InvalidStrokes = -10,
 }
 
 impl LmlStatus {
-    const ALL: [LmlStatus; 11] = [
+    const ALL: [LmlStatus; 13] = [
         LmlStatus::Ok,
         LmlStatus::More,
         LmlStatus::Converged,
@@ -50,6 +57,8 @@ impl LmlStatus {
         LmlStatus::BufferTooSmall,
         LmlStatus::CorruptData,
         LmlStatus::InternalError,
+        LmlStatus::InvalidGuides,
+        LmlStatus::InvalidStrokes,
     ];
 
     /// The constant's name as a NUL-terminated string.
@@ -66,6 +75,8 @@ impl LmlStatus {
             LmlStatus::BufferTooSmall => c"LML_STATUS_BUFFER_TOO_SMALL",
             LmlStatus::CorruptData => c"LML_STATUS_CORRUPT_DATA",
             LmlStatus::InternalError => c"LML_STATUS_INTERNAL_ERROR",
+            LmlStatus::InvalidGuides => c"LML_STATUS_INVALID_GUIDES",
+            LmlStatus::InvalidStrokes => c"LML_STATUS_INVALID_STROKES",
         }
     }
 }

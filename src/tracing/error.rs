@@ -30,6 +30,8 @@ pub enum TraceError {
     ArcParameterOutOfRange { s: f64 },
     /// The corner threshold (a turning angle) is non-finite or outside `[0°, 180°]`.
     CornerAngleOutOfRange { degrees: f64 },
+    /// A query point (e.g. for the nearest boundary point) has a NaN or infinite coordinate.
+    NonFinitePoint,
 }
 
 impl fmt::Display for TraceError {
@@ -70,6 +72,7 @@ impl fmt::Display for TraceError {
             TraceError::CornerAngleOutOfRange { degrees } => {
                 write!(f, "corner turning angle {degrees}° is not in [0°, 180°]")
             }
+            TraceError::NonFinitePoint => write!(f, "query point has a NaN or infinite coordinate"),
         }
     }
 }

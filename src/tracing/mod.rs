@@ -31,5 +31,7 @@ pub use error::TraceError;
 pub use intersections::{intersections, Crossing, IntersectionReport};
 pub use options::TraceOptions;
 pub use order::{check_order, OrderDefect};
-pub use seeding::{boundary_segments, boundary_start, evenly_spaced_starts, BoundarySegment, DEFAULT_CORNER_TURN_DEGREES};
+pub use seeding::{
+    boundary_segments, boundary_start, evenly_spaced_starts, nearest_boundary_point, BoundarySegment, DEFAULT_CORNER_TURN_DEGREES,
+};
 pub use tracer::Tracer;

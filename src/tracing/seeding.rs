@@ -1,6 +1,7 @@
 //! Start points for traced guide curves on the mesh boundary (reference notes §4.1): the
 //! boundary loops split at corners into segments, evenly spaced start points along a segment,
-//! and a single start point by arc-length parameter along a loop.
+//! a single start point by arc-length parameter along a loop, and the boundary point nearest to
+//! a given point in space (where a designer clicks).
 
 use super::TraceError;
 use crate::mesh::{EdgePoint, TriMesh, Vec3};
@@ -98,6 +99,32 @@ pub fn boundary_start(mesh: &TriMesh, loop_index: usize, s: f64) -> Result<EdgeP
     closed.push(boundary_loop[0]);
     let polyline = BoundaryPolyline::new(mesh, &closed)?;
     Ok(polyline.point_at(s * polyline.length))
+}
+
+/// The point of the mesh boundary (any loop) closest to `point` in space, on its boundary edge
+/// given in loop order. Ties go to the first edge in loop order (loops in the order of
+/// [`TriMesh::boundary_loops`]), so the answer is deterministic.
+pub fn nearest_boundary_point(mesh: &TriMesh, point: Vec3) -> Result<EdgePoint, TraceError> {
+    if !point.iter().all(|c| c.is_finite()) {
+        return Err(TraceError::NonFinitePoint);
+    }
+    let positions = mesh.positions();
+    let mut best: Option<(f64, EdgePoint)> = None;
+    for boundary_loop in mesh.boundary_loops() {
+        for (k, &a) in boundary_loop.iter().enumerate() {
+            let b = boundary_loop[(k + 1) % boundary_loop.len()];
+            // Internal invariant: loop vertices are mesh vertices.
+            let (pa, pb) = (positions[a as usize], positions[b as usize]);
+            let edge = pb - pa;
+            let length2 = edge.norm_squared();
+            let t = if length2 > 0.0 { ((point - pa).dot(&edge) / length2).clamp(0.0, 1.0) } else { 0.0 };
+            let distance2 = (pa + t * edge - point).norm_squared();
+            if best.as_ref().is_none_or(|(d, _)| distance2 < *d) {
+                best = Some((distance2, EdgePoint { edge: [a, b], t }));
+            }
+        }
+    }
+    best.map(|(_, p)| p).ok_or(TraceError::LoopOutOfRange { index: 0, count: 0 })
 }
 
 /// Boundary loop `index` of `mesh`.

@@ -6,8 +6,8 @@
 static int passed;
 static int failed;
 
-/* Status codes run from -8 to 2; index = code + 8. */
-#define STATUS_MIN (-8)
+/* Status codes run from -10 to 2; index = code + 10. */
+#define STATUS_MIN (-10)
 #define STATUS_MAX 2
 static int seen[STATUS_MAX - STATUS_MIN + 1];
 

@@ -73,9 +73,9 @@ void cylinder_free(Cylinder *c)
     c->field = NULL;
 }
 
-double cylinder_binormal_angle(const double *prev, const double *p, const double *next)
+double binormal_angle(const double *prev, const double *p, const double *next, const double *n)
 {
-    double e0[3], e1[3], t[3], b[3], n[3], u[3], l0, l1, lb, bn, bu;
+    double e0[3], e1[3], t[3], b[3], u[3], l0, l1, lb, bn, bu;
     int k;
     for (k = 0; k < 3; k++) {
         e0[k] = p[k] - prev[k];
@@ -90,13 +90,20 @@ double cylinder_binormal_angle(const double *prev, const double *p, const double
     b[1] = e0[2] * e1[0] - e0[0] * e1[2];
     b[2] = e0[0] * e1[1] - e0[1] * e1[0];
     lb = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
-    n[0] = p[0] / sqrt(p[0] * p[0] + p[1] * p[1]);
-    n[1] = p[1] / sqrt(p[0] * p[0] + p[1] * p[1]);
-    n[2] = 0.0;
     u[0] = n[1] * t[2] - n[2] * t[1];
     u[1] = n[2] * t[0] - n[0] * t[2];
     u[2] = n[0] * t[1] - n[1] * t[0];
-    bn = (b[0] * n[0] + b[1] * n[1]) / lb;
+    bn = (b[0] * n[0] + b[1] * n[1] + b[2] * n[2]) / lb;
     bu = b[0] * u[0] + b[1] * u[1] + b[2] * u[2];
     return acos(fmin(1.0, fmax(-1.0, bu < 0.0 ? -bn : bn))) * 180.0 / PI;
+}
+
+double cylinder_binormal_angle(const double *prev, const double *p, const double *next)
+{
+    double r = sqrt(p[0] * p[0] + p[1] * p[1]);
+    double n[3];
+    n[0] = p[0] / r;
+    n[1] = p[1] / r;
+    n[2] = 0.0;
+    return binormal_angle(prev, p, next, n);
 }

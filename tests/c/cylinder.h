@@ -26,8 +26,11 @@ int cylinder_generate(Cylinder *cylinder, unsigned columns, unsigned rows, uint6
 void cylinder_free(Cylinder *cylinder);
 
 /* The signed angle in degrees between the discrete binormal of a polyline at `p` (paper Eq. 1:
- * (p - prev) x (next - p), normalised) and the cylinder's radial normal at `p`, signed as in
+ * (p - prev) x (next - p), normalised) and the unit surface normal `n` at `p`, signed as in
  * Eq. 8 by the side vector u = n x t (t the sum of the unit edges): acos(sign(b.u) b.n). */
+double binormal_angle(const double *prev, const double *p, const double *next, const double *n);
+
+/* binormal_angle with the cylinder's radial normal at `p`. */
 double cylinder_binormal_angle(const double *prev, const double *p, const double *next);
 
 #endif

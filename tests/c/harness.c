@@ -21,6 +21,7 @@ int main(int argc, char **argv)
     test_mesh(scratch);
     test_field_inputs(&cylinder);
     test_threads(&cylinder);
+    test_guides(&cylinder);
     field = test_solve(&cylinder);
     CHECK(field != NULL);
     if (field != NULL) {

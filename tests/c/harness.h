@@ -25,5 +25,9 @@ LmlCurves *test_curves(const LmlField *field, const Cylinder *cylinder);
 /* Strips on `curves` (taken over and freed): parameters, every invalid input, Table 4 metrics
  * and independent checks of planarity, unrolling and width; skipped curves. */
 void test_strips(const LmlField *field, LmlCurves *curves);
+/* Guide curves on the cylinder: boundary starts, traced 60 degree P-curves against the mesh
+ * normals, crossings and the order check, initial fields from guides (then solved) and from
+ * strokes along them, and every invalid input. */
+void test_guides(const Cylinder *cylinder);
 
 #endif
