@@ -105,7 +105,7 @@ namespace Lamella.Tests
             using (var one = GuideCurves.Trace(mesh, new[] { BoundaryStarts.Nearest(mesh, 11, 0, 7) }, 60, 90))
             {
                 double target;
-                Expect(Status.InvalidGuides, () => InitialField.FromGuides(mesh, one, out target), "1");
+                Expect(Status.InvalidGuides, () => InitialField.FromGuides(mesh, one, out target), "at least 2");
             }
         }
 
@@ -118,10 +118,10 @@ namespace Lamella.Tests
                 double theta;
                 // One stroke along the patch's middle height.
                 var middle = new double[] { 10 * Math.Cos(0.5), 10 * Math.Sin(0.5), 7, 10 * Math.Cos(1.0), 10 * Math.Sin(1.0), 7.5 };
-                Expect(Status.InvalidStrokes, () => InitialField.FromStrokes(mesh, new[] { middle }, out theta), "1");
+                Expect(Status.InvalidStrokes, () => InitialField.FromStrokes(mesh, new[] { middle }, out theta), "at least 2");
                 // Two strokes, the second's point 1 far outside the surface.
                 var far = new double[] { 10 * Math.Cos(0.5), 10 * Math.Sin(0.5), 3, 30, 30, 3 };
-                Expect(Status.InvalidStrokes, () => InitialField.FromStrokes(mesh, new[] { middle, far }, out theta), "stroke 1");
+                Expect(Status.InvalidStrokes, () => InitialField.FromStrokes(mesh, new[] { middle, far }, out theta), "stroke 1, point 1");
             }
         }
 
@@ -133,15 +133,15 @@ namespace Lamella.Tests
             {
                 EdgePoint start = BoundaryStarts.Nearest(mesh, 11, 0, 7);
                 // Start 1 lies on an interior edge (vertices 14 and 15 of the 13 x 9 grid's second row).
-                Expect(Status.InvalidArgument, () => GuideCurves.Trace(mesh, new[] { start, new EdgePoint(14, 15, 0.5) }, 60, 90), "start 1");
-                Expect(Status.InvalidArgument, () => GuideCurves.Trace(mesh, new[] { start }, 200, 90), "200");
-                Expect(Status.InvalidArgument, () => GuideCurves.Trace(mesh, new[] { start }, 60, 0), "0");
+                Expect(Status.InvalidArgument, () => GuideCurves.Trace(mesh, new[] { start, new EdgePoint(14, 15, 0.5) }, 60, 90), "starts[1]");
+                Expect(Status.InvalidArgument, () => GuideCurves.Trace(mesh, new[] { start }, 200, 90), "theta_degrees");
+                Expect(Status.InvalidArgument, () => GuideCurves.Trace(mesh, new[] { start }, 60, 0), "start_angle_degrees");
                 var options = TraceOptions.Default();
                 options.MaxTurnDegrees = 120;
                 Expect(Status.InvalidArgument, () => GuideCurves.Trace(mesh, new[] { start }, 60, 90, options), "max_turn_degrees");
                 Expect(Status.InvalidArgument, () => BoundaryStarts.At(mesh, 0, 1.5), "1.5");
-                Expect(Status.InvalidArgument, () => BoundaryStarts.SegmentCount(mesh, 3), "3");
-                Expect(Status.InvalidArgument, () => BoundaryStarts.EvenlySpaced(mesh, 0, 30, 9, 2), "9");
+                Expect(Status.InvalidArgument, () => BoundaryStarts.SegmentCount(mesh, 3), "loop 3");
+                Expect(Status.InvalidArgument, () => BoundaryStarts.EvenlySpaced(mesh, 0, 30, 9, 2), "segment 9");
                 double theta;
                 // Offsets that decrease.
                 Expect(Status.InvalidArgument, () => InitialField.FromStrokes(mesh, new double[] { 10, 0, 3, 10, 0, 4 }, new[] { 0, 2, 1 }, out theta), "offset");
@@ -151,7 +151,7 @@ namespace Lamella.Tests
                 using (var guides = GuideCurves.Trace(otherMesh, new[] { BoundaryStarts.Nearest(otherMesh, 11, 0, 4), BoundaryStarts.Nearest(otherMesh, 11, 0, 10) }, 60, 90))
                 {
                     double target;
-                    Expect(Status.InvalidArgument, () => InitialField.FromGuides(mesh, guides, out target), "");
+                    Expect(Status.InvalidArgument, () => InitialField.FromGuides(mesh, guides, out target), "135 vertices");
                 }
             }
         }
