@@ -161,15 +161,18 @@ static int straight(const double *prev, const double *p, const double *next)
 }
 
 /* Largest |binormal angle - theta| over the interior points of curve `i`, with the mesh normals;
- * `reversed`: measured travelling the curve backwards. Straight turns have no binormal. */
+ * `reversed`: measured travelling the curve backwards. Straight turns have no binormal and are
+ * skipped, but at most one is accepted per curve (180 is returned otherwise): the tracer may
+ * reach the boundary by an exactly straight last step. */
 static double worst_angle_error(const Polylines *p, size_t i, const double *normals, double theta, int reversed)
 {
     double worst = 0.0;
-    size_t q;
+    size_t q, straight_turns = 0;
     for (q = p->offsets[i] + 1; q + 1 < p->offsets[i + 1]; q++) {
         const double *x = p->points + 3 * q;
         double n[3];
         if (straight(x - 3, x, x + 3)) {
+            straight_turns++;
             continue;
         }
         normal_at(normals, p->edges[q], n);
@@ -179,7 +182,7 @@ static double worst_angle_error(const Polylines *p, size_t i, const double *norm
             worst = fmax(worst, fabs(binormal_angle(x - 3, x, x + 3, n) - theta));
         }
     }
-    return worst;
+    return straight_turns > 1 ? 180.0 : worst;
 }
 
 /* Development coordinates (s, z) of a point of the cylinder. */
