@@ -31,6 +31,19 @@ namespace Lamella.Grasshopper
         public double ThetaDegrees { get; }
     }
 
+    /// <summary>Traced guide curves with the θ they were traced at (the Trace P-Curve component owns them).</summary>
+    public sealed class GuidesData
+    {
+        public GuidesData(GuideCurves guides, double thetaDegrees)
+        {
+            Guides = guides;
+            ThetaDegrees = thetaDegrees;
+        }
+
+        public GuideCurves Guides { get; }
+        public double ThetaDegrees { get; }
+    }
+
     public sealed class FieldGoo : GH_Goo<FieldData>
     {
         public FieldGoo(FieldData data) : base(data) { }
@@ -59,5 +72,15 @@ namespace Lamella.Grasshopper
         public override string TypeDescription => "Rectifying developable strips with their unrollings and metrics";
         public override IGH_Goo Duplicate() => new StripsGoo(Value);
         public override string ToString() => Value == null ? "no strips" : "Lamella strips";
+    }
+
+    public sealed class GuidesGoo : GH_Goo<GuidesData>
+    {
+        public GuidesGoo(GuidesData data) : base(data) { }
+        public override bool IsValid => Value != null;
+        public override string TypeName => "Lamella Guides";
+        public override string TypeDescription => "Traced guide curves (P-curves) on a mesh, in order: the level sets F = 0, 1, 2, … of a start field";
+        public override IGH_Goo Duplicate() => new GuidesGoo(Value);
+        public override string ToString() => Value == null ? "no guides" : "Lamella guides, θ = " + Value.ThetaDegrees + "°";
     }
 }

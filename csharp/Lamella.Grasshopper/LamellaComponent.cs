@@ -52,21 +52,34 @@ namespace Lamella.Grasshopper
         /// <summary>The component's work; inputs already read by the caller are checked here.</summary>
         protected abstract void Solve(IGH_DataAccess DA);
 
-        /// <summary>The value of a goo input, or an error message when it is missing or of another type.</summary>
+        /// <summary>The value of a goo input, or null when it is missing or of another type (then with an error message).</summary>
         protected T GooValue<TGoo, T>(IGH_DataAccess DA, int index, string what) where TGoo : GH_Goo<T> where T : class
         {
+            T value;
+            TryGooValue<TGoo, T>(DA, index, what, out value);
+            return value;
+        }
+
+        /// <summary>
+        /// Reads a goo input into <paramref name="value"/> (null when nothing is connected). False, with an error message,
+        /// when the input holds something else than <paramref name="what"/>.
+        /// </summary>
+        protected bool TryGooValue<TGoo, T>(IGH_DataAccess DA, int index, string what, out T value) where TGoo : GH_Goo<T> where T : class
+        {
+            value = null;
             IGH_Goo goo = null;
             if (!DA.GetData(index, ref goo) || goo == null)
             {
-                return null;
+                return true;
             }
             var typed = goo as TGoo;
             if (typed == null || typed.Value == null)
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Error, "input is a " + goo.TypeName + ", not " + what);
-                return null;
+                return false;
             }
-            return typed.Value;
+            value = typed.Value;
+            return true;
         }
     }
 }

@@ -15,14 +15,7 @@ namespace Lamella.Grasshopper
         /// <summary>The mesh's vertices (x, y, z each) and its faces as triangles (quads split along the shorter diagonal).</summary>
         public static void MeshToArrays(Mesh mesh, out double[] xyz, out int[] triangles)
         {
-            Point3d[] points = mesh.Vertices.ToPoint3dArray();
-            xyz = new double[3 * points.Length];
-            for (int i = 0; i < points.Length; i++)
-            {
-                xyz[3 * i] = points[i].X;
-                xyz[3 * i + 1] = points[i].Y;
-                xyz[3 * i + 2] = points[i].Z;
-            }
+            xyz = PointsToArray(mesh.Vertices.ToPoint3dArray());
             var corners = new int[4 * mesh.Faces.Count];
             for (int f = 0; f < mesh.Faces.Count; f++)
             {
@@ -33,6 +26,41 @@ namespace Lamella.Grasshopper
                 corners[4 * f + 3] = face.D;
             }
             triangles = MeshArrays.Triangulate(xyz, corners);
+        }
+
+        /// <summary>The points as x, y, z each.</summary>
+        public static double[] PointsToArray(IList<Point3d> points)
+        {
+            var xyz = new double[3 * points.Count];
+            for (int i = 0; i < points.Count; i++)
+            {
+                xyz[3 * i] = points[i].X;
+                xyz[3 * i + 1] = points[i].Y;
+                xyz[3 * i + 2] = points[i].Z;
+            }
+            return xyz;
+        }
+
+        /// <summary>
+        /// A curve drawn on the surface as a stroke polyline (x, y, z per point) with points at most
+        /// <paramref name="spacing"/> apart: a polyline keeps its corners and is densified, any other curve is divided
+        /// into ⌈length / spacing⌉ arcs of equal length.
+        /// </summary>
+        public static double[] CurveToStroke(Curve curve, double spacing)
+        {
+            var polyline = curve as PolylineCurve;
+            if (polyline != null)
+            {
+                var corners = new Point3d[polyline.PointCount];
+                for (int i = 0; i < corners.Length; i++) corners[i] = polyline.Point(i);
+                return StrokeArrays.Densify(PointsToArray(corners), spacing);
+            }
+            double segments = Math.Ceiling(curve.GetLength() / spacing);
+            if (!(segments >= 1 && segments <= 1e6)) throw new ArgumentException("a stroke curve is not finite or over a million mesh edges long");
+            Point3d[] points;
+            curve.DivideByCount((int)segments, true, out points);
+            if (points == null) throw new ArgumentException("a stroke curve could not be divided (is it valid?)");
+            return PointsToArray(points);
         }
 
         public static Point3d Point(double[] xyz, int i) => new Point3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);

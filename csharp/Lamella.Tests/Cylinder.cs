@@ -58,5 +58,33 @@ namespace Lamella.Tests
             double r = Math.Sqrt(p[3 * index] * p[3 * index] + p[3 * index + 1] * p[3 * index + 1]);
             return new[] { p[3 * index] / r, p[3 * index + 1] / r, 0.0 };
         }
+
+        /// <summary>
+        /// The signed angle (degrees) between the discrete binormal (paper Eq. 1) of the polyline corner
+        /// prev → p → next and the analytic normal at p: acos(sign(b·u)·(b·n)) with u = n × t (paper Sec. 3.1).
+        /// </summary>
+        public static double BinormalAngle(double[] prev, double[] p, double[] next)
+        {
+            double[] e0 = Vec.Sub(p, prev), e1 = Vec.Sub(next, p), b = Vec.Cross(e0, e1);
+            double[] t = { e0[0] / Vec.Norm(e0) + e1[0] / Vec.Norm(e1), e0[1] / Vec.Norm(e0) + e1[1] / Vec.Norm(e1), e0[2] / Vec.Norm(e0) + e1[2] / Vec.Norm(e1) };
+            double r = Math.Sqrt(p[0] * p[0] + p[1] * p[1]);
+            double[] n = { p[0] / r, p[1] / r, 0 };
+            double bn = Vec.Dot(b, n) / Vec.Norm(b);
+            return Vec.Degrees(Vec.Dot(b, Vec.Cross(n, t)) < 0 ? -bn : bn);
+        }
+
+        /// <summary>The isometric development of a point: (arc length around the axis from the left side, height).</summary>
+        public static double[] Development(double[] p) => new[] { Radius * Math.Atan2(p[1], p[0]), p[2] };
+
+        /// <summary>
+        /// The developed P-curve of angle θ with its apex (lowest or highest point) at (x0, z0), opening upwards (up)
+        /// or downwards: z = z0 ± (cosh(k(x − x0)) − 1)/k with k = tan(90° − θ)/R (Wunderlich's catenaries; the
+        /// derivation is in tests/tracing_cylinder.rs).
+        /// </summary>
+        public static double Catenary(double thetaDegrees, double x0, double z0, bool up, double x)
+        {
+            double k = Math.Tan((90.0 - thetaDegrees) * Math.PI / 180.0) / Radius;
+            return z0 + (up ? 1 : -1) * (Math.Cosh(k * (x - x0)) - 1) / k;
+        }
     }
 }

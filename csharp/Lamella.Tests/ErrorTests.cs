@@ -98,6 +98,65 @@ namespace Lamella.Tests
         }
 
         [Test]
+        public void InvalidGuides()
+        {
+            var c = new Cylinder(12, 8, 3);
+            using (var mesh = LamellaMesh.FromArrays(c.Xyz, c.Triangles))
+            using (var one = GuideCurves.Trace(mesh, new[] { BoundaryStarts.Nearest(mesh, 11, 0, 7) }, 60, 90))
+            {
+                double target;
+                Expect(Status.InvalidGuides, () => InitialField.FromGuides(mesh, one, out target), "at least 2");
+            }
+        }
+
+        [Test]
+        public void InvalidStrokes()
+        {
+            var c = new Cylinder(12, 8, 3);
+            using (var mesh = LamellaMesh.FromArrays(c.Xyz, c.Triangles))
+            {
+                double theta;
+                // One stroke along the patch's middle height.
+                var middle = new double[] { 10 * Math.Cos(0.5), 10 * Math.Sin(0.5), 7, 10 * Math.Cos(1.0), 10 * Math.Sin(1.0), 7.5 };
+                Expect(Status.InvalidStrokes, () => InitialField.FromStrokes(mesh, new[] { middle }, out theta), "at least 2");
+                // Two strokes, the second's point 1 far outside the surface.
+                var far = new double[] { 10 * Math.Cos(0.5), 10 * Math.Sin(0.5), 3, 30, 30, 3 };
+                Expect(Status.InvalidStrokes, () => InitialField.FromStrokes(mesh, new[] { middle, far }, out theta), "stroke 1, point 1");
+            }
+        }
+
+        [Test]
+        public void GuideArgumentsAreInvalidArguments()
+        {
+            var c = new Cylinder(12, 8, 3);
+            using (var mesh = LamellaMesh.FromArrays(c.Xyz, c.Triangles))
+            {
+                EdgePoint start = BoundaryStarts.Nearest(mesh, 11, 0, 7);
+                // Start 1 lies on an interior edge (vertices 14 and 15 of the 13 x 9 grid's second row).
+                Expect(Status.InvalidArgument, () => GuideCurves.Trace(mesh, new[] { start, new EdgePoint(14, 15, 0.5) }, 60, 90), "starts[1]");
+                Expect(Status.InvalidArgument, () => GuideCurves.Trace(mesh, new[] { start }, 200, 90), "theta_degrees");
+                Expect(Status.InvalidArgument, () => GuideCurves.Trace(mesh, new[] { start }, 60, 0), "start_angle_degrees");
+                var options = TraceOptions.Default();
+                options.MaxTurnDegrees = 120;
+                Expect(Status.InvalidArgument, () => GuideCurves.Trace(mesh, new[] { start }, 60, 90, options), "max_turn_degrees");
+                Expect(Status.InvalidArgument, () => BoundaryStarts.At(mesh, 0, 1.5), "1.5");
+                Expect(Status.InvalidArgument, () => BoundaryStarts.SegmentCount(mesh, 3), "loop 3");
+                Expect(Status.InvalidArgument, () => BoundaryStarts.EvenlySpaced(mesh, 0, 30, 9, 2), "segment 9");
+                double theta;
+                // Offsets that decrease.
+                Expect(Status.InvalidArgument, () => InitialField.FromStrokes(mesh, new double[] { 10, 0, 3, 10, 0, 4 }, new[] { 0, 2, 1 }, out theta), "offset");
+                // Guides traced on another mesh.
+                var other = new Cylinder(14, 8, 3);
+                using (var otherMesh = LamellaMesh.FromArrays(other.Xyz, other.Triangles))
+                using (var guides = GuideCurves.Trace(otherMesh, new[] { BoundaryStarts.Nearest(otherMesh, 11, 0, 4), BoundaryStarts.Nearest(otherMesh, 11, 0, 10) }, 60, 90))
+                {
+                    double target;
+                    Expect(Status.InvalidArgument, () => InitialField.FromGuides(mesh, guides, out target), "135 vertices");
+                }
+            }
+        }
+
+        [Test]
         public void EveryFailureStatusIsCovered()
         {
             // Each negative status has a test method of its name above.
@@ -114,6 +173,14 @@ namespace Lamella.Tests
             Assert.Throws<ArgumentException>(() => LamellaMesh.FromArrays(new double[4], SquareTriangles));
             Assert.Throws<ArgumentOutOfRangeException>(() => LamellaMesh.FromArrays(Square, new[] { 0, -1, 2 }));
             Assert.Throws<ArgumentNullException>(() => FieldSolver.Load(null));
+            Assert.Throws<ArgumentNullException>(() => GuideCurves.Trace(null, new EdgePoint[0], 60, 90));
+            using (var square = LamellaMesh.FromArrays(Square, SquareTriangles))
+            {
+                double theta;
+                Assert.Throws<ArgumentOutOfRangeException>(() => BoundaryStarts.EvenlySpaced(square, 0, 30, 0, -1));
+                Assert.Throws<ArgumentOutOfRangeException>(() => InitialField.FromStrokes(square, new double[6], new[] { 0, -2 }, out theta));
+                Assert.Throws<ArgumentException>(() => InitialField.FromStrokes(square, new double[5], new[] { 0, 1 }, out theta));
+            }
         }
     }
 }

@@ -28,6 +28,8 @@ namespace Lamella.Tests
     {
         public CType Type;
         public string Name;
+        /// <summary>The element count of an array field (<c>double position[3]</c>), 1 otherwise.</summary>
+        public int Count = 1;
     }
 
     /// <summary>
@@ -81,8 +83,9 @@ namespace Lamella.Tests
                 {
                     foreach (string p in parameters.Split(','))
                     {
-                        Match typed = Regex.Match(p.Trim(), @"^(?<type>.*?)(?<name>\w+)$", RegexOptions.Singleline);
-                        f.Parameters.Add(new CType(typed.Groups["type"].Value));
+                        // An array parameter (const double point[3]) is a pointer.
+                        Match typed = Regex.Match(p.Trim(), @"^(?<type>.*?)(?<name>\w+)\s*(?<array>\[\d*\])?$", RegexOptions.Singleline);
+                        f.Parameters.Add(new CType(typed.Groups["type"].Value + (typed.Groups["array"].Success ? "*" : "")));
                     }
                 }
                 functions.Add(f);
@@ -101,8 +104,13 @@ namespace Lamella.Tests
                 {
                     string d = declaration.Trim();
                     if (d.Length == 0) continue;
-                    Match typed = Regex.Match(d, @"^(?<type>.*?)(?<name>\w+)$", RegexOptions.Singleline);
-                    fields.Add(new CField { Type = new CType(typed.Groups["type"].Value), Name = typed.Groups["name"].Value });
+                    Match typed = Regex.Match(d, @"^(?<type>.*?)(?<name>\w+)\s*(\[(?<count>\d+)\])?$", RegexOptions.Singleline);
+                    fields.Add(new CField
+                    {
+                        Type = new CType(typed.Groups["type"].Value),
+                        Name = typed.Groups["name"].Value,
+                        Count = typed.Groups["count"].Success ? int.Parse(typed.Groups["count"].Value) : 1,
+                    });
                 }
                 structs[m.Groups["name"].Value] = fields;
             }
@@ -119,6 +127,15 @@ namespace Lamella.Tests
                 constants[m.Groups["name"].Value] = long.Parse(m.Groups["value"].Value);
             foreach (Match m in Regex.Matches(Code, @"\b(?<name>LML_\w+) = (?<value>-?\d+),"))
                 constants[m.Groups["name"].Value] = long.Parse(m.Groups["value"].Value);
+            return constants;
+        }
+
+        /// <summary>Every floating-point <c>LML_*</c> #define (<c>#define LML_X 30.0</c>).</summary>
+        public static Dictionary<string, double> FloatConstants()
+        {
+            var constants = new Dictionary<string, double>();
+            foreach (Match m in Regex.Matches(Code, @"#define (?<name>LML_\w+) \(?(?<value>-?\d+\.\d*(e-?\d+)?)\)?\s"))
+                constants[m.Groups["name"].Value] = double.Parse(m.Groups["value"].Value, System.Globalization.CultureInfo.InvariantCulture);
             return constants;
         }
 

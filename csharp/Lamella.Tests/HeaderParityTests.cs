@@ -29,6 +29,18 @@ namespace Lamella.Tests
             { "LmlStripMetrics", typeof(StripMetrics) },
             { "LmlPatternMetrics", typeof(PatternMetrics) },
             { "LmlSkippedCurve", typeof(SkippedCurve) },
+            { "LmlEdgePoint", typeof(EdgePoint) },
+            { "LmlTraceOptions", typeof(TraceOptions) },
+            { "LmlCrossing", typeof(Crossing) },
+        };
+
+        /// <summary>Integer typedefs of the header and the managed enum each is carried by (also in arrays).</summary>
+        private static readonly Dictionary<string, Type> ScalarTypedefs = new Dictionary<string, Type>
+        {
+            { "LmlStatus", typeof(Status) },
+            { "LmlFamily", typeof(Family) },
+            { "LmlStripWarnings", typeof(StripWarnings) },
+            { "LmlTraceStop", typeof(TraceStop) },
         };
 
         private static Dictionary<string, MethodInfo> Imports() =>
@@ -113,7 +125,9 @@ namespace Lamella.Tests
             Type twin;
             if (StructTwins.TryGetValue(name, out twin))
                 return element == twin ? null : c.Text + " in C, " + managed.Name + " in C#";
-            if (name.StartsWith("Lml", StringComparison.Ordinal) && name != "LmlStatus")
+            if (ScalarTypedefs.TryGetValue(name, out twin))
+                return element == twin ? null : c.Text + " in C, " + managed.Name + " in C#";
+            if (name.StartsWith("Lml", StringComparison.Ordinal))
                 return element.Name == name.Substring(3) + "Handle" || managed == typeof(IntPtr) ? null : c.Text + " in C, " + managed.Name + " in C#";
             return null;
         }
@@ -132,7 +146,7 @@ namespace Lamella.Tests
             switch (type)
             {
                 case "uint8_t": return new Layout(1, 1);
-                case "int32_t": case "uint32_t": case "LmlStatus": case "LmlFamily": return new Layout(4, 4);
+                case "int32_t": case "uint32_t": case "LmlStatus": case "LmlFamily": case "LmlTraceStop": return new Layout(4, 4);
                 case "uint64_t": case "double": case "LmlStripWarnings": return new Layout(8, 8);
                 case "size_t": return new Layout(IntPtr.Size, IntPtr.Size);
             }
@@ -143,7 +157,7 @@ namespace Lamella.Tests
             foreach (CField field in fields)
             {
                 Layout f = CLayout(field.Type.Base);
-                offset = (offset + f.Align - 1) / f.Align * f.Align + f.Size;
+                offset = (offset + f.Align - 1) / f.Align * f.Align + f.Size * field.Count;
                 align = Math.Max(align, f.Align);
             }
             return new Layout((offset + align - 1) / align * align, align);
@@ -176,7 +190,7 @@ namespace Lamella.Tests
                         problems.Add(s.Key + "." + s.Value[i].Name + " is " + twin.Name + "." + fields[i].Name);
                     if ((int)Marshal.OffsetOf(twin, fields[i].Name) != offset)
                         problems.Add(s.Key + "." + s.Value[i].Name + " at " + offset + " in C, " + Marshal.OffsetOf(twin, fields[i].Name) + " in C#");
-                    offset += f.Size;
+                    offset += f.Size * s.Value[i].Count;
                 }
                 if (Marshal.SizeOf(twin) != CLayout(s.Key).Size)
                     problems.Add(s.Key + ": " + CLayout(s.Key).Size + " bytes in C, " + Marshal.SizeOf(twin) + " in C#");
@@ -192,6 +206,8 @@ namespace Lamella.Tests
             var warnings = Header.ConstantsPascal("LML_STRIP_WARNING_");
             warnings["None"] = 0;
             AssertEnumMatches(typeof(StripWarnings), warnings);
+            AssertEnumMatches(typeof(TraceStop), Header.ConstantsPascal("LML_TRACE_STOP_"));
+            Assert.AreEqual(Header.FloatConstants()["LML_DEFAULT_CORNER_TURN_DEGREES"], BoundaryStarts.DefaultCornerTurnDegrees);
             Assert.AreEqual(Header.Constants()["LML_ABI_VERSION"], (long)Library.BindingAbiVersion);
         }
 

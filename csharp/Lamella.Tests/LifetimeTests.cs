@@ -26,8 +26,9 @@ namespace Lamella.Tests
             var field = new FieldSolver(mesh, c.InitialField, FieldParams.Default(Family.PseudoGeodesic, 60));
             var curves = LevelCurves.Uniform(field, 2, 1.0);
             var strips = Strips.Build(curves, StripParams.Default(60, 0.5));
-            Assert.AreEqual(before + 4, Library.DebugLiveHandles);
-            foreach (IDisposable d in new IDisposable[] { strips, curves, field, mesh })
+            var guides = GuideCurves.Trace(mesh, new[] { BoundaryStarts.Nearest(mesh, 11, 0, 7) }, 60, 90);
+            Assert.AreEqual(before + 5, Library.DebugLiveHandles);
+            foreach (IDisposable d in new IDisposable[] { guides, strips, curves, field, mesh })
             {
                 d.Dispose();
                 d.Dispose();
@@ -37,6 +38,7 @@ namespace Lamella.Tests
             Assert.Throws<ObjectDisposedException>(() => field.Step(1));
             Assert.Throws<ObjectDisposedException>(() => curves.Points());
             Assert.Throws<ObjectDisposedException>(() => { var n = strips.Count; });
+            Assert.Throws<ObjectDisposedException>(() => guides.Points());
         }
 
         [Test]
@@ -61,6 +63,34 @@ namespace Lamella.Tests
             worker.Start();
             worker.Join();
             Assert.AreEqual(5L, whileAlive);
+            Collect();
+            Assert.AreEqual(0L, Library.DebugLiveHandles);
+        }
+
+        [Test]
+        public void LeakedGuideCurvesAreFreedByFinalizers()
+        {
+            Collect();
+            Assert.AreEqual(0L, Library.DebugLiveHandles, "no handle may be alive between tests");
+            long whileAlive = -1, afterMeshDisposed = -1;
+            int pointsWithoutMesh = -1;
+            var worker = new Thread(() =>
+            {
+                var c = new Cylinder(12, 8, 9);
+                var mesh = LamellaMesh.FromArrays(c.Xyz, c.Triangles);
+                GuideCurves.Trace(mesh, new[] { BoundaryStarts.Nearest(mesh, 11, 0, 4), BoundaryStarts.Nearest(mesh, 11, 0, 10) }, 60, 90);
+                var kept = GuideCurves.Trace(mesh, new[] { BoundaryStarts.Nearest(mesh, 11, 0, 7) }, 60, 90);
+                whileAlive = Library.DebugLiveHandles;
+                mesh.Dispose();
+                // The guides hold their own reference to the surface: still usable without the mesh.
+                afterMeshDisposed = Library.DebugLiveHandles;
+                pointsWithoutMesh = kept.Points().Length;
+            });
+            worker.Start();
+            worker.Join();
+            Assert.AreEqual(3L, whileAlive);
+            Assert.AreEqual(2L, afterMeshDisposed);
+            Assert.Greater(pointsWithoutMesh, 3);
             Collect();
             Assert.AreEqual(0L, Library.DebugLiveHandles);
         }

@@ -139,7 +139,7 @@ namespace Lamella.Tests
                     normalError = Math.Max(normalError, 1 - Vec.Dot(Vec.At(normals, p), n));
                     if (p > offsets[c] && p + 1 < offsets[c + 1])
                     {
-                        angleSum += Math.Abs(BinormalAngle(Vec.At(points, p - 1), x, Vec.At(points, p + 1)) - Theta);
+                        angleSum += Math.Abs(Cylinder.BinormalAngle(Vec.At(points, p - 1), x, Vec.At(points, p + 1)) - Theta);
                         angles++;
                     }
                     // Resampled at the requested spacing (the last segment of a curve may be shorter).
@@ -214,7 +214,7 @@ namespace Lamella.Tests
                     unit = Math.Max(unit, Math.Abs(Vec.Norm(Vec.At(rulings, p)) - 1));
                     if (j > 0 && j + 1 < n)
                     {
-                        angle = Math.Max(angle, Math.Abs(BinormalAngle(Vec.At(centres, p - 1), c, Vec.At(centres, p + 1)) - Theta));
+                        angle = Math.Max(angle, Math.Abs(Cylinder.BinormalAngle(Vec.At(centres, p - 1), c, Vec.At(centres, p + 1)) - Theta));
                     }
                 }
             }
@@ -343,20 +343,6 @@ namespace Lamella.Tests
         {
             double[] u = Vec.Sub(b, a), v = Vec.Sub(c, a), w = Vec.Sub(d, a);
             return Math.Abs(Vec.Dot(u, Vec.Cross(v, w))) / (Vec.Norm(u) * Vec.Norm(v) * Vec.Norm(w));
-        }
-
-        /// <summary>
-        /// The signed angle in degrees between the discrete binormal of the polyline prev–p–next (paper Eq. 1) and the
-        /// cylinder's analytic normal at p, the sign of b·(n × t) telling the two mirror families apart.
-        /// </summary>
-        private static double BinormalAngle(double[] prev, double[] p, double[] next)
-        {
-            double[] e0 = Vec.Sub(p, prev), e1 = Vec.Sub(next, p), b = Vec.Cross(e0, e1);
-            double[] t = { e0[0] / Vec.Norm(e0) + e1[0] / Vec.Norm(e1), e0[1] / Vec.Norm(e0) + e1[1] / Vec.Norm(e1), e0[2] / Vec.Norm(e0) + e1[2] / Vec.Norm(e1) };
-            double r = Math.Sqrt(p[0] * p[0] + p[1] * p[1]);
-            double[] n = { p[0] / r, p[1] / r, 0 };
-            double bn = Vec.Dot(b, n) / Vec.Norm(b);
-            return Vec.Degrees(Vec.Dot(b, Vec.Cross(n, t)) < 0 ? -bn : bn);
         }
     }
 }

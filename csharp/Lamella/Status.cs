@@ -25,5 +25,9 @@ namespace Lamella
         CorruptData = -7,
         /// <summary>A bug inside the native library (a caught panic).</summary>
         InternalError = -8,
+        /// <summary>Guide curves unfit for the initial field: fewer than two, crossing, self-intersecting or out of order (the message names the curves).</summary>
+        InvalidGuides = -9,
+        /// <summary>Sketched strokes unfit for a field: too far from the surface, crossing, too short, or fewer than two (the message names stroke and point).</summary>
+        InvalidStrokes = -10,
     }
 }

@@ -68,6 +68,18 @@ def strip_quality():
     return p
 
 
+def trace_p_curve():
+    p = canvas()
+    for y in range(2, 22):
+        dot(p, 2, y, INK)
+    for k, start in enumerate((6, 12)):
+        curve(p, lambda x, s=start: s + 2.0 * math.cosh((x - 3) / 6) - 2.0, INK, x0=3, x1=21)
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                dot(p, 2 + dx, start + dy, ACCENT)
+    return p
+
+
 def library():
     p = strip_field()
     curve(p, lambda x: 21, ACCENT)
@@ -75,5 +87,5 @@ def library():
 
 
 for name, draw in [("StripField", strip_field), ("LevelCurves", level_curves), ("RectifyingStrips", rectifying_strips),
-                   ("StripQuality", strip_quality), ("Lamella", library)]:
+                   ("StripQuality", strip_quality), ("TracePCurve", trace_p_curve), ("Lamella", library)]:
     png(name + ".png", draw())

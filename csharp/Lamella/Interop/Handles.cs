@@ -35,4 +35,10 @@ namespace Lamella.Interop
         public StripsHandle() { }
         protected override bool ReleaseHandle() { NativeMethods.lml_strips_free(handle); return true; }
     }
+
+    internal sealed class GuidesHandle : LamellaHandle
+    {
+        public GuidesHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_guides_free(handle); return true; }
+    }
 }

@@ -110,5 +110,43 @@ namespace Lamella.Interop
         public static extern Status lml_strips_pattern_metrics(StripsHandle strips, out PatternMetrics metrics);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_strips_skipped(StripsHandle strips, [Out] SkippedCurve[] buffer, UIntPtr capacity, out UIntPtr needed);
+
+        // Guide curves: trace options, boundary start points, LmlGuides.
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_trace_options_default(out TraceOptions options);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_boundary_segment_count(MeshHandle mesh, uint loopIndex, double cornerTurnDegrees, out UIntPtr count);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_boundary_starts(MeshHandle mesh, uint loopIndex, double cornerTurnDegrees, uint segmentIndex, uint count,
+            [Out] EdgePoint[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_boundary_start_at(MeshHandle mesh, uint loopIndex, double s, out EdgePoint point);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_boundary_start_nearest(MeshHandle mesh, double[] point, out EdgePoint nearest);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_guides_trace(MeshHandle mesh, EdgePoint[] starts, UIntPtr count, double thetaDegrees, double startAngleDegrees,
+            [In] ref TraceOptions options, out GuidesHandle guides);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_guides_free(IntPtr guides);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_guides_count(GuidesHandle guides, out UIntPtr count);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_guides_offsets(GuidesHandle guides, [Out] UIntPtr[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_guides_points(GuidesHandle guides, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_guides_edge_points(GuidesHandle guides, [Out] EdgePoint[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_guides_stops(GuidesHandle guides, [Out] TraceStop[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_guides_lengths(GuidesHandle guides, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_guides_crossings(GuidesHandle guides, [Out] Crossing[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_guides_check_order(GuidesHandle guides);
+
+        // Initial fields from guides and strokes.
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_field_values_from_guides(MeshHandle mesh, GuidesHandle guides, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed,
+            out double gradientTarget);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_field_values_from_strokes(MeshHandle mesh, double[] points, UIntPtr pointCount, UIntPtr[] offsets, UIntPtr strokeCount,
+            [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed, out double thetaDegrees);
     }
 }

@@ -5,6 +5,7 @@ namespace GH_IO.Serialization
     {
         void SetByteArray(string item_name, byte[] item_value);
         void SetString(string item_name, string item_value);
+        void SetDouble(string item_name, double item_value);
     }
 
     public interface GH_IReader
@@ -12,5 +13,6 @@ namespace GH_IO.Serialization
         bool ItemExists(string name);
         byte[] GetByteArray(string name);
         string GetString(string name);
+        double GetDouble(string name);
     }
 }

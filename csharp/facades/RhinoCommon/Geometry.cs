@@ -52,11 +52,15 @@ namespace Rhino.Geometry
     public class Curve : GeometryBase
     {
         internal Curve() { throw new NotSupportedException("facade"); }
+        public double GetLength() { throw new NotSupportedException("facade"); }
+        public double[] DivideByCount(int segmentCount, bool includeEnds, out Point3d[] points) { throw new NotSupportedException("facade"); }
     }
 
     public class PolylineCurve : Curve
     {
         public PolylineCurve(IEnumerable<Point3d> points) { throw new NotSupportedException("facade"); }
+        public int PointCount { get { throw new NotSupportedException("facade"); } }
+        public Point3d Point(int index) { throw new NotSupportedException("facade"); }
     }
 }
 
