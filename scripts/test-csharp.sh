@@ -7,6 +7,7 @@
 # Needs cargo and python3; installs mono-devel and NUnit 2.6 with apt-get (as root) when missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+root="$PWD"
 
 target="${CARGO_TARGET_DIR:-target}"
 build="$target/csharp"
@@ -51,7 +52,7 @@ cp "$target/debug/liblamella.so" "$build/"
 rm -f "$build/TestResult.xml"
 status=0
 # The panic test makes the library print a panic message on stderr; that is expected.
-(cd "$build" && RUST_BACKTRACE=0 LAMELLA_HEADER="$PWD/../../include/lamella.h" \
+(cd "$build" && RUST_BACKTRACE=0 LAMELLA_HEADER="$root/include/lamella.h" \
     nunit-console -nologo -labels -xml=TestResult.xml Lamella.Tests.dll) || status=$?
 python3 - "$build/TestResult.xml" "$status" <<'PY'
 import sys
