@@ -85,6 +85,14 @@ impl FieldSolver {
 
     /// Runs at most `max_iterations` Levenberg–Marquardt iterations and reports the state.
     pub fn step(&mut self, max_iterations: usize) -> Result<StepReport, FieldError> {
+        // On a thread of the rayon pool, the many short parallel passes of an iteration fork
+        // from a worker instead of each injecting its work into the pool from outside and
+        // sleeping until it is done (which costs a wake-up of both sides per pass).
+        rayon::scope(|_| self.run(max_iterations))
+    }
+
+    /// [`Self::step`], on the calling thread.
+    fn run(&mut self, max_iterations: usize) -> Result<StepReport, FieldError> {
         let mut flips = 0;
         let mut ran = 0;
         while ran < max_iterations && !self.converged {

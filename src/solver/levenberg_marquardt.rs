@@ -133,7 +133,15 @@ impl LevenbergMarquardt {
     /// rejected (including failed factorisations and non-finite trial energies): μ ← μν, ν ← 2ν,
     /// and the damped system is re-solved without re-evaluating Jacobians, up to `max_trials`.
     /// Never accepts a step that raises E.
+    ///
+    /// Runs on a thread of the rayon pool (the calling thread if it is one), so that its short
+    /// parallel passes fork from a worker rather than each waking the pool from outside.
     pub fn iterate<P: LeastSquaresProblem>(&mut self, problem: &P, x: &mut [f64]) -> Result<IterationOutcome, SolverError> {
+        rayon::scope(|_| self.iterate_here(problem, x))
+    }
+
+    /// [`Self::iterate`] on the calling thread.
+    fn iterate_here<P: LeastSquaresProblem>(&mut self, problem: &P, x: &mut [f64]) -> Result<IterationOutcome, SolverError> {
         self.check_unchanged(problem, x)?;
         self.accepted = false;
         evaluate_slots(problem, &self.blocks, x, &mut self.slots)?;
