@@ -10,53 +10,69 @@
 use super::crossing::{find_level_crossing, EdgeCrossing, LevelCrossing};
 use crate::mesh::{TriMesh, Vec3};
 
-/// Most field columns a chord depends on: the centre and the two ends of both crossed edges.
-const MAX_PARTIALS: usize = 6;
+/// How a crossing point `a + t (b − a)` depends on the star's field values: columns 0 (the
+/// centre), `col_a` and `col_b` (the ends of its edge).
+#[derive(Clone, Copy, Debug)]
+struct PointPartials {
+    edge: Vec3,
+    /// `Fb − Fa`.
+    denominator: f64,
+    t: f64,
+    col_a: usize,
+    col_b: usize,
+}
 
-/// A vector-valued function of the star's field values: its value and sparse partials
-/// `∂w/∂F_col` (a column may repeat; partials are meant to be accumulated).
+impl PointPartials {
+    /// `(column, ∂point/∂F_column)` for the centre and both edge ends.
+    fn partials(&self) -> [(usize, Vec3); 3] {
+        [
+            (0, self.edge / self.denominator),
+            (self.col_a, self.edge * (-(1.0 - self.t) / self.denominator)),
+            (self.col_b, self.edge * (-self.t / self.denominator)),
+        ]
+    }
+}
+
+/// A crossing point of the level curve with its dependence on the field.
+#[derive(Clone, Copy, Debug)]
+struct CrossingPoint {
+    position: Vec3,
+    partials: PointPartials,
+}
+
+/// A chord `from − to` between two points of the star as a function of the star's field values:
+/// its value and, derived on demand, its partials `∂w/∂F_col` (the end `to` is always a crossing
+/// point; `from` is a crossing point too or the fixed centre vertex).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct FieldVector {
     pub value: Vec3,
-    partials: [(usize, Vec3); MAX_PARTIALS],
-    count: usize,
+    from: Option<PointPartials>,
+    to: PointPartials,
 }
 
 impl FieldVector {
-    fn constant(value: Vec3) -> Self {
-        FieldVector { value, partials: [(0, Vec3::zeros()); MAX_PARTIALS], count: 0 }
+    /// `from − to` for the fixed point `from` (the centre vertex) and a crossing point `to`.
+    fn from_fixed(from: Vec3, to: &CrossingPoint) -> Self {
+        FieldVector { value: from - to.position, from: None, to: to.partials }
     }
 
-    fn partials(&self) -> &[(usize, Vec3)] {
-        &self.partials[..self.count]
-    }
-
-    /// `self − other`; the partial lists are concatenated (at most six entries in all uses here).
-    fn minus(&self, other: &FieldVector) -> FieldVector {
-        let mut out = FieldVector::constant(self.value - other.value);
-        for &(col, d) in self.partials() {
-            out.push(col, d);
-        }
-        for &(col, d) in other.partials() {
-            out.push(col, -d);
-        }
-        out
-    }
-
-    fn push(&mut self, col: usize, d: Vec3) {
-        // Invariant: callers combine at most two crossing points (3 partials each).
-        self.partials[self.count] = (col, d);
-        self.count += 1;
+    /// `from − to` for two crossing points.
+    fn between(from: &CrossingPoint, to: &CrossingPoint) -> Self {
+        FieldVector { value: from.position - to.position, from: Some(from.partials), to: to.partials }
     }
 
     /// Accumulates `scale · ∂(c · ŵ)/∂F` into `row` (indexed by field column), where
-    /// `ŵ = w/‖w‖` and `c` is held fixed: `∂(c·ŵ) = (c − (c·ŵ)ŵ) · ∂w / ‖w‖`.
+    /// `ŵ = w/‖w‖` and `c` is held fixed: `∂(c·ŵ) = (c − (c·ŵ)ŵ) · ∂w / ‖w‖`. A column may
+    /// receive several contributions (those of `from`, then those of `to`).
     pub fn add_normalized_dot_partials(&self, c: &Vec3, scale: f64, row: &mut [f64]) {
         let norm = self.value.norm();
         let unit = self.value / norm;
         let projected = (c - unit * c.dot(&unit)) * (scale / norm);
-        for &(col, d) in self.partials() {
+        for (col, d) in self.from.iter().flat_map(PointPartials::partials) {
             row[col] += projected.dot(&d);
+        }
+        for (col, d) in self.to.partials() {
+            row[col] += projected.dot(&-d);
         }
     }
 
@@ -87,29 +103,33 @@ impl StarChords {
 
     /// Builds the chords of vertex `v` for a known crossing; `None` when a chord degenerates.
     pub fn new(mesh: &TriMesh, field: &[f64], v: usize, crossing: &LevelCrossing) -> Option<Self> {
-        let v0 = FieldVector::constant(mesh.positions()[v]);
+        let v0 = mesh.positions()[v];
         let ring_len = mesh.star(v).neighbours.len();
         let p = crossing_point(mesh, field, ring_len, &crossing.p);
         let q = crossing_point(mesh, field, ring_len, &crossing.q);
-        let chords = StarChords { to_p: v0.minus(&p), to_q: v0.minus(&q), tangent: q.minus(&p) };
+        let chords = StarChords {
+            to_p: FieldVector::from_fixed(v0, &p),
+            to_q: FieldVector::from_fixed(v0, &q),
+            tangent: FieldVector::between(&q, &p),
+        };
         let scale = mesh.mean_edge_length() * DEGENERATE_CHORD;
         let shortest = chords.to_p.value.norm().min(chords.to_q.value.norm()).min(chords.tangent.value.norm());
         (shortest > scale).then_some(chords)
     }
 }
 
-fn crossing_point(mesh: &TriMesh, field: &[f64], ring_len: usize, c: &EdgeCrossing) -> FieldVector {
+fn crossing_point(mesh: &TriMesh, field: &[f64], ring_len: usize, c: &EdgeCrossing) -> CrossingPoint {
     let pa = mesh.positions()[c.a as usize];
     let pb = mesh.positions()[c.b as usize];
     let edge = pb - pa;
-    let denominator = field[c.b as usize] - field[c.a as usize];
-    let mut point = FieldVector::constant(pa + edge * c.t);
-    let col_a = 1 + c.slot;
-    let col_b = 1 + (c.slot + 1) % ring_len;
-    point.push(0, edge / denominator);
-    point.push(col_a, edge * (-(1.0 - c.t) / denominator));
-    point.push(col_b, edge * (-c.t / denominator));
-    point
+    let partials = PointPartials {
+        edge,
+        denominator: field[c.b as usize] - field[c.a as usize],
+        t: c.t,
+        col_a: 1 + c.slot,
+        col_b: 1 + (c.slot + 1) % ring_len,
+    };
+    CrossingPoint { position: pa + edge * c.t, partials }
 }
 
 /// Zeroes a block's residuals and Jacobian (singular vertices keep zero rows) and returns the

@@ -31,7 +31,10 @@ pub struct LevenbergMarquardt {
     systems: GroupSystems,
     gather: ReducedGather,
     slots: Vec<f64>,
+    /// Residuals of the last trial point, segmented by block.
     trial_residuals: Vec<f64>,
+    /// The last [`Self::iterate`] accepted its last trial point.
+    accepted: bool,
     gradient: Vec<f64>,
     hessian: Vec<f64>,
     /// diag(JᵀJ) over the global variables (scratch of [`Self::initial_damping`]).
@@ -71,6 +74,7 @@ impl LevenbergMarquardt {
             gather,
             slots: vec![0.0; blocks.slot_ptr[blocks.block_count()]],
             trial_residuals: vec![0.0; blocks.residual_ptr[blocks.block_count()]],
+            accepted: false,
             gradient: vec![0.0; n],
             hessian: vec![0.0; nnz],
             global_diagonal: vec![0.0; blocks.global_count],
@@ -108,6 +112,13 @@ impl LevenbergMarquardt {
         self.nu = 2.0;
     }
 
+    /// Residuals of block `b` at the point the last [`Self::iterate`] moved x to, as evaluated
+    /// for its gain ratio; `None` if that iteration accepted no step.
+    pub(crate) fn accepted_residuals(&self, b: usize) -> Option<&[f64]> {
+        let ptr = &self.blocks.residual_ptr;
+        self.accepted.then(|| &self.trial_residuals[ptr[b]..ptr[b + 1]])
+    }
+
     /// Energy E(x) = Σ_b ‖r_b(x)‖² without Jacobians (parallel, deterministic: per-block squared
     /// norms summed in block order). Non-finite residuals or a wrong length of `x` give +∞.
     pub fn evaluate_energy<P: LeastSquaresProblem>(problem: &P, x: &[f64]) -> f64 {
@@ -122,8 +133,17 @@ impl LevenbergMarquardt {
     /// rejected (including failed factorisations and non-finite trial energies): μ ← μν, ν ← 2ν,
     /// and the damped system is re-solved without re-evaluating Jacobians, up to `max_trials`.
     /// Never accepts a step that raises E.
+    ///
+    /// Runs on a thread of the rayon pool (the calling thread if it is one), so that its short
+    /// parallel passes fork from a worker rather than each waking the pool from outside.
     pub fn iterate<P: LeastSquaresProblem>(&mut self, problem: &P, x: &mut [f64]) -> Result<IterationOutcome, SolverError> {
+        rayon::scope(|_| self.iterate_here(problem, x))
+    }
+
+    /// [`Self::iterate`] on the calling thread.
+    fn iterate_here<P: LeastSquaresProblem>(&mut self, problem: &P, x: &mut [f64]) -> Result<IterationOutcome, SolverError> {
         self.check_unchanged(problem, x)?;
+        self.accepted = false;
         evaluate_slots(problem, &self.blocks, x, &mut self.slots)?;
         // The serial reduction of the block slots runs while the other threads accumulate the
         // groups (which read the slots only). With μ already known, each group is eliminated for
@@ -188,6 +208,7 @@ impl LevenbergMarquardt {
                     self.set_damping(mu * factor);
                     self.nu = 2.0;
                     x.copy_from_slice(&self.trial_x);
+                    self.accepted = true;
                     outcome.accepted = true;
                     outcome.energy_after = trial_energy;
                     outcome.damping = self.damping();

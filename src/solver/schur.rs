@@ -280,22 +280,16 @@ fn eliminate_kernel(k: usize, q: usize, s: &mut Sections<'_>, mu: f64) -> bool {
             *c /= diagonal;
         }
     }
-    // W − G_L = ZᵀZ − G_L (upper, packed, over G_L) and v = Zᵀz, summed over the rows of Z in
-    // order.
-    for wij in s.gram.iter_mut() {
-        *wij = -*wij;
-    }
-    s.schur_rhs.fill(0.0);
-    for z_row in s.coupling.chunks_exact(w) {
-        let mut t = 0;
-        for i in 0..q {
-            let zi = z_row[i];
-            for (wij, &zj) in s.gram[t..t + q - i].iter_mut().zip(&z_row[i..q]) {
-                *wij += zi * zj;
-            }
-            t += q - i;
-            s.schur_rhs[i] += zi * z_row[q];
+    // W − G_L = ZᵀZ − G_L (upper, packed, over G_L) and v = Zᵀz, each entry summed over the
+    // rows of Z in order (starting from −G_L and 0), in a register.
+    let rows = &*s.coupling;
+    let mut t = 0;
+    for i in 0..q {
+        for (j, wij) in (i..q).zip(s.gram[t..t + q - i].iter_mut()) {
+            *wij = rows.chunks_exact(w).fold(-*wij, |sum, z_row| sum + z_row[i] * z_row[j]);
         }
+        t += q - i;
+        s.schur_rhs[i] = rows.chunks_exact(w).fold(0.0, |sum, z_row| sum + z_row[i] * z_row[q]);
     }
     true
 }
