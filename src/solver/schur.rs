@@ -259,6 +259,9 @@ fn accumulate_kernel(k: usize, q: usize, s: &mut Sections<'_>, blocks: &BlockStr
     }
 }
 
+/// Entries of a row of W − G_L summed side by side in [`eliminate_kernel`].
+const LANES: usize = 4;
+
 /// [`GroupSystems::eliminate`] of one group (k local and q global variables).
 fn eliminate_kernel(k: usize, q: usize, s: &mut Sections<'_>, mu: f64) -> bool {
     let w = q + 1;
@@ -281,11 +284,25 @@ fn eliminate_kernel(k: usize, q: usize, s: &mut Sections<'_>, mu: f64) -> bool {
         }
     }
     // W − G_L = ZᵀZ − G_L (upper, packed, over G_L) and v = Zᵀz, each entry summed over the
-    // rows of Z in order (starting from −G_L and 0), in a register.
+    // rows of Z in order (starting from −G_L and 0), in a register; the entries of a row of W are
+    // formed [`LANES`] at a time, so that each row of Z is read once per group of lanes.
     let rows = &*s.coupling;
     let mut t = 0;
     for i in 0..q {
-        for (j, wij) in (i..q).zip(s.gram[t..t + q - i].iter_mut()) {
+        let mut lanes = s.gram[t..t + q - i].chunks_exact_mut(LANES);
+        let mut j = i;
+        for entries in lanes.by_ref() {
+            let mut sums: [f64; LANES] = std::array::from_fn(|e| -entries[e]);
+            for z_row in rows.chunks_exact(w) {
+                let zi = z_row[i];
+                for (sum, &zj) in sums.iter_mut().zip(&z_row[j..j + LANES]) {
+                    *sum += zi * zj;
+                }
+            }
+            entries.copy_from_slice(&sums);
+            j += LANES;
+        }
+        for (j, wij) in (j..q).zip(lanes.into_remainder()) {
             *wij = rows.chunks_exact(w).fold(-*wij, |sum, z_row| sum + z_row[i] * z_row[j]);
         }
         t += q - i;
