@@ -65,10 +65,13 @@ pub fn require_no_crossings(report: &IntersectionReport) -> CliResult<()> {
         None => Ok(()),
         Some(c) => {
             let p = c.position;
+            let which = if c.curves[0] == c.curves[1] {
+                format!("guide {} crosses itself", c.curves[0])
+            } else {
+                format!("guides {} and {} cross", c.curves[0], c.curves[1])
+            };
             Err(CliError::bad_input(format!(
-                "guides {} and {} cross at ({:.3}, {:.3}, {:.3}) ({} crossing(s), {} self-intersection(s)); try another --guide-angle or --guide-side",
-                c.curves[0],
-                c.curves[1],
+                "{which} at ({:.3}, {:.3}, {:.3}) ({} crossing(s), {} self-intersection(s)); try another --guide-angle or --guide-side",
                 p.x,
                 p.y,
                 p.z,
