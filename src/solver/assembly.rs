@@ -53,7 +53,7 @@ impl ReducedGather {
     pub fn new(pattern: &NormalPattern, groups: &GroupStructure, systems: &GroupSystems) -> Self {
         let group_count = groups.group_count();
         let (schur_ptr, schur_sources) = transpose(
-            pattern.row_idx.len(),
+            pattern.storage_len(),
             (0..group_count).flat_map(|l| {
                 let targets = &pattern.schur_targets[pattern.schur_ptr[l]..pattern.schur_ptr[l + 1]];
                 targets.iter().copied().zip(systems.schur_start(groups, l)..)
@@ -88,7 +88,8 @@ fn transpose(n: usize, pairs: impl Iterator<Item = (usize, usize)> + Clone) -> (
 }
 
 /// The reduced system S h_G = rhs for damping μ, from the reduced block products and the group
-/// eliminations for this μ: S = H_GG + μI − Σ_L (W_L − G_L), rhs = −g_G + Σ_L v_L.
+/// eliminations for this μ: S = H_GG + μI − Σ_L (W_L − G_L), rhs = −g_G + Σ_L v_L. S is
+/// written as the sum of its domain matrices (see [`super::substructured_cholesky`]).
 pub(crate) struct ReducedSystem<'a> {
     pub pattern: &'a NormalPattern,
     pub gather: &'a ReducedGather,
@@ -108,8 +109,9 @@ impl ReducedSystem<'_> {
             for (i, value) in values.iter_mut().enumerate() {
                 let t = c * CHUNK + i;
                 let mut s = self.hessian[t];
-                if self.pattern.is_diagonal[t] {
-                    s += self.mu;
+                let share = self.pattern.damping_share[t];
+                if share != 0.0 {
+                    s += self.mu * share;
                 }
                 for &source in &gather.schur_sources[gather.schur_ptr[t]..gather.schur_ptr[t + 1]] {
                     s -= terms[source];

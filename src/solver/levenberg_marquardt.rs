@@ -6,7 +6,7 @@ use super::assembly::{reduce_blocks, ReducedGather, ReducedSystem};
 use super::evaluation::{evaluate_energy_into, evaluate_energy_standalone, evaluate_slots};
 use super::normal_pattern::NormalPattern;
 use super::schur::GroupSystems;
-use super::sparse_cholesky::SparseCholesky;
+use super::substructured_cholesky::SubstructuredCholesky;
 use super::structure::{analyse, BlockStructure, GroupStructure};
 use super::{Convergence, IterationOutcome, LeastSquaresProblem, LmOptions, SolverError};
 
@@ -27,7 +27,7 @@ pub struct LevenbergMarquardt {
     groups: GroupStructure,
     pattern: NormalPattern,
     /// `None` when there are no global variables.
-    cholesky: Option<SparseCholesky>,
+    cholesky: Option<SubstructuredCholesky>,
     systems: GroupSystems,
     gather: ReducedGather,
     slots: Vec<f64>,
@@ -48,18 +48,16 @@ pub struct LevenbergMarquardt {
 impl LevenbergMarquardt {
     /// Validates the problem (variable indices in range, no duplicates, layout consistent: each
     /// block touches ≤ 1 local group), builds the fixed sparsity pattern of the (reduced) normal
-    /// matrix and its symbolic Cholesky analysis (AMD ordering) once.
+    /// matrix, its bisection into two domains and their symbolic Cholesky analyses (AMD
+    /// ordering) once.
     pub fn new<P: LeastSquaresProblem>(problem: &P, options: LmOptions) -> Result<Self, SolverError> {
         let (blocks, groups) = analyse(problem)?;
         let mut pattern = NormalPattern::build(&blocks, &groups);
         let cholesky = if pattern.dimension() > 0 {
-            let cholesky = SparseCholesky::analyse(pattern.col_ptr.clone(), pattern.row_idx.clone())?;
-            // The reduced matrix is assembled directly in the factorisation's storage order.
-            let mut new_position = vec![0; cholesky.original_positions().len()];
-            for (p, &t) in cholesky.original_positions().iter().enumerate() {
-                new_position[t] = p;
-            }
-            pattern.renumber(&new_position);
+            let cholesky = SubstructuredCholesky::analyse(&pattern.col_ptr, &pattern.row_idx)?;
+            // The reduced matrix is assembled directly in the factorisations' storage order.
+            let storage = cholesky.storage_positions(pattern.row_idx.len());
+            pattern.assign_storage(&blocks, &groups, &storage, &cholesky.domains_of_variables())?;
             Some(cholesky)
         } else {
             None
@@ -67,7 +65,7 @@ impl LevenbergMarquardt {
         let systems = GroupSystems::new(&groups);
         let gather = ReducedGather::new(&pattern, &groups, &systems);
         let n = blocks.variable_count;
-        let nnz = pattern.row_idx.len();
+        let nnz = pattern.storage_len();
         Ok(Self {
             options,
             systems,
@@ -232,8 +230,9 @@ impl LevenbergMarquardt {
     /// μ₀ = tau · max diag(JᵀJ) over global and local variables (tau itself for a zero Jacobian).
     /// The global diagonal adds the diagonals of the groups' G_L to that of H_GG.
     fn initial_damping(&mut self) -> f64 {
-        for (d, &position) in self.global_diagonal.iter_mut().zip(&self.pattern.diagonal) {
-            *d = self.hessian[position];
+        self.global_diagonal.fill(0.0);
+        for &(v, position) in &self.pattern.diagonal {
+            self.global_diagonal[v as usize] += self.hessian[position];
         }
         for l in 0..self.groups.group_count() {
             for (&v, g) in self.groups.globals(l).iter().zip(self.systems.gram_diagonal(&self.groups, l)) {

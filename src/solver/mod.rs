@@ -1,8 +1,9 @@
 //! Sparse nonlinear least-squares engine: adaptive Levenberg–Marquardt with a fixed sparsity
-//! pattern, Schur elimination of small local variable groups, sparse Cholesky (faer) and
-//! deterministic parallel assembly. It drives the level-set field optimisation of the paper
+//! pattern, Schur elimination of small local variable groups, a sparse Cholesky (faer) split
+//! into two domains factorised at the same time, and deterministic parallel assembly. It drives the level-set field optimisation of the paper
 //! (Sec. 3.2.2, Eq. 8–12: one scalar per vertex plus the per-vertex auxiliaries b, u).
 mod assembly;
+mod bisection;
 mod error;
 mod evaluation;
 mod jacobian_check;
@@ -16,6 +17,7 @@ mod schur;
 mod segments;
 mod sparse_cholesky;
 mod structure;
+mod substructured_cholesky;
 
 pub use error::SolverError;
 pub use jacobian_check::check_block_jacobian;

@@ -4,14 +4,17 @@
 //! S has an entry (i, j) when i and j are global variables of one block without a local group, or
 //! global variables of one local group (the Schur-complement fill), plus the whole diagonal.
 use super::structure::{BlockStructure, GroupStructure};
+use super::SolverError;
 
 pub(crate) struct NormalPattern {
     pub col_ptr: Vec<usize>,
     pub row_idx: Vec<usize>,
-    /// Position of the diagonal entry of each column.
-    pub diagonal: Vec<usize>,
-    /// Whether each value position is on the diagonal.
-    pub is_diagonal: Vec<bool>,
+    /// Position of the diagonal entry of each column; after [`Self::assign_storage`], every
+    /// stored copy of a diagonal entry as (variable, value position), by variable.
+    pub diagonal: Vec<(u32, usize)>,
+    /// Share of the damping μ on each value position: 1 on the diagonal, ½ on each of the two
+    /// copies of a separator variable's diagonal, 0 elsewhere.
+    pub damping_share: Vec<f64>,
     /// `gram_targets[gram_ptr[b]..]`: for each upper pair (i ≤ j) of the global positions of a block b
     /// without a local group (none for the others),
     /// in the order of its Gram slot, the value position in S.
@@ -47,7 +50,7 @@ impl NormalPattern {
         let (col_ptr, row_idx) = upper_pattern(g, &clique_ptr, &clique_vars);
         let mut pattern = Self {
             diagonal: Vec::new(),
-            is_diagonal: Vec::new(),
+            damping_share: Vec::new(),
             col_ptr,
             row_idx,
             gram_ptr: vec![0],
@@ -77,27 +80,62 @@ impl NormalPattern {
         let mut targets = pattern.positions(&entries);
         pattern.schur_targets = targets.split_off(gram_end);
         pattern.gram_targets = targets.split_off(g);
-        pattern.diagonal = targets;
-        pattern.is_diagonal = vec![false; pattern.row_idx.len()];
-        for &d in &pattern.diagonal {
-            pattern.is_diagonal[d] = true;
+        pattern.diagonal = targets.into_iter().enumerate().map(|(v, t)| (v as u32, t)).collect();
+        pattern.damping_share = vec![0.0; pattern.row_idx.len()];
+        for &(_, t) in &pattern.diagonal {
+            pattern.damping_share[t] = 1.0;
         }
         pattern
     }
 
-    /// Renumbers the value positions: the value at position t moves to `new_position[t]` (a
-    /// permutation of the positions, e.g. the sparse Cholesky's storage order). Afterwards the
-    /// scatter maps and diagonals refer to the new positions; `col_ptr`/`row_idx` keep the
-    /// original upper pattern.
-    pub fn renumber(&mut self, new_position: &[usize]) {
-        for t in self.diagonal.iter_mut().chain(&mut self.gram_targets).chain(&mut self.schur_targets) {
-            *t = new_position[*t];
+    /// Moves the values into the storage of the domain matrices (see
+    /// [`super::substructured_cholesky`]): `storage[d][t]` is the position of entry `t` of the
+    /// pattern in domain `d`'s matrix (`usize::MAX` if absent), `domain_of[v]` the domain whose
+    /// interior holds variable `v` (`None` on the separator). Each block and group scatters into
+    /// the domain of its variables; `col_ptr`/`row_idx` keep the original upper pattern.
+    pub fn assign_storage(
+        &mut self,
+        blocks: &BlockStructure,
+        groups: &GroupStructure,
+        storage: &[Vec<usize>],
+        domain_of: &[Option<usize>],
+    ) -> Result<(), SolverError> {
+        // Local variables (beyond `domain_of`) have no domain.
+        let domain = |vars: &[u32]| vars.iter().find_map(|&v| domain_of.get(v as usize).copied().flatten()).unwrap_or(0);
+        let relocate = |targets: &mut [usize], d: usize| -> Result<(), SolverError> {
+            for t in targets {
+                *t = storage[d][*t];
+                if *t == usize::MAX {
+                    return Err(SolverError::SymbolicAnalysisFailed { message: "a block couples two domains".to_string() });
+                }
+            }
+            Ok(())
+        };
+        for b in 0..blocks.block_count() {
+            let d = domain(blocks.variables(b));
+            relocate(&mut self.gram_targets[self.gram_ptr[b]..self.gram_ptr[b + 1]], d)?;
         }
-        let mut is_diagonal = vec![false; self.is_diagonal.len()];
-        for (t, &d) in self.is_diagonal.iter().enumerate() {
-            is_diagonal[new_position[t]] = d;
+        for l in 0..groups.group_count() {
+            let d = domain(groups.globals(l));
+            relocate(&mut self.schur_targets[self.schur_ptr[l]..self.schur_ptr[l + 1]], d)?;
         }
-        self.is_diagonal = is_diagonal;
+        let storage_len = storage.iter().flatten().filter(|&&p| p != usize::MAX).count();
+        self.damping_share = vec![0.0; storage_len];
+        let mut diagonal = Vec::with_capacity(self.diagonal.len());
+        for &(v, t) in &self.diagonal {
+            let copies: Vec<usize> = storage.iter().map(|positions| positions[t]).filter(|&p| p != usize::MAX).collect();
+            for &p in &copies {
+                self.damping_share[p] = 1.0 / copies.len() as f64;
+                diagonal.push((v, p));
+            }
+        }
+        self.diagonal = diagonal;
+        Ok(())
+    }
+
+    /// Number of value positions (after [`Self::assign_storage`]: of the domain storage).
+    pub fn storage_len(&self) -> usize {
+        self.damping_share.len()
     }
 
     pub fn dimension(&self) -> usize {
