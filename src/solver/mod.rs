@@ -1,7 +1,8 @@
 //! Sparse nonlinear least-squares engine: adaptive Levenberg–Marquardt with a fixed sparsity
 //! pattern, Schur elimination of small local variable groups, a sparse Cholesky (faer) split
-//! into two domains factorised at the same time, and deterministic parallel assembly. It drives the level-set field optimisation of the paper
-//! (Sec. 3.2.2, Eq. 8–12: one scalar per vertex plus the per-vertex auxiliaries b, u).
+//! into two domains factorised at the same time, and deterministic parallel assembly. It drives
+//! the level-set field optimisation of the paper (Sec. 3.2.2, Eq. 8–12: one scalar per vertex
+//! plus the per-vertex auxiliaries b, u).
 mod assembly;
 mod bisection;
 mod error;
