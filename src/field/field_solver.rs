@@ -6,7 +6,7 @@ use super::error::FieldError;
 use super::gradient_norm::mean_gradient_norm;
 use super::params::{Family, FieldParams, Weights, SETTLED_CURVE_ENERGY, SETTLING_ITERATIONS};
 use super::problem::FieldProblem;
-use super::report::{curve_energy, StepReport};
+use super::report::{curve_energy, Evaluated, StepReport};
 use crate::mesh::{TriMesh, Vec3};
 use crate::solver::{LeastSquaresProblem, LevenbergMarquardt};
 use rayon::prelude::*;
@@ -58,7 +58,7 @@ impl FieldSolver {
         x.resize(solver.x.len(), 0.0);
         solver.x = x;
         solver.initialize_auxiliaries();
-        solver.last_report = solver.measure(0, 0);
+        solver.last_report = solver.measure(0, 0, None);
         Ok(solver)
     }
 
@@ -95,8 +95,11 @@ impl FieldSolver {
     fn run(&mut self, max_iterations: usize) -> Result<StepReport, FieldError> {
         let mut flips = 0;
         let mut ran = 0;
+        // The weights of the last iteration, whose accepted residuals the report can reuse.
+        let mut iterated_weights = None;
         while ran < max_iterations && !self.converged {
             flips += self.reorient_side_vectors();
+            iterated_weights = Some(self.problem.weights());
             let outcome = self.lm.iterate(&self.problem, &mut self.x)?;
             ran += 1;
             self.iterations += 1;
@@ -115,7 +118,7 @@ impl FieldSolver {
                 self.enter_stage(self.stage + 1);
             }
         }
-        self.last_report = self.measure(ran, flips);
+        self.last_report = self.measure(ran, flips, iterated_weights);
         Ok(self.last_report.clone())
     }
 
@@ -162,7 +165,7 @@ impl FieldSolver {
         self.problem.set_vertex_targets(degrees);
         self.slow_iterations = 0;
         self.converged = false;
-        self.last_report = self.measure(0, 0);
+        self.last_report = self.measure(0, 0, None);
     }
 
     /// The mesh in the caller's units: the solver's unit-scaled copy scaled back (the input
@@ -282,7 +285,11 @@ impl FieldSolver {
         curve_energy(&self.problem, &self.x) <= SETTLED_CURVE_ENERGY
     }
 
-    fn measure(&self, iterations_this_step: usize, flips: usize) -> StepReport {
+    /// The report at x. `iterated_weights`: the weights of the iteration that moved to x, whose
+    /// residuals there the solver kept (the energies are taken from them).
+    fn measure(&self, iterations_this_step: usize, flips: usize, iterated_weights: Option<Weights>) -> StepReport {
+        let accepted = |b| self.lm.accepted_residuals(b);
+        let evaluated = iterated_weights.map(|weights| Evaluated { weights, residuals: &accepted });
         StepReport {
             iterations: self.iterations,
             iterations_this_step,
@@ -290,7 +297,7 @@ impl FieldSolver {
             flips,
             damping: self.lm.damping(),
             converged: self.converged,
-            ..StepReport::measure(&self.problem, &self.x)
+            ..StepReport::measure(&self.problem, &self.x, evaluated.as_ref())
         }
     }
 }

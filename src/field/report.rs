@@ -52,8 +52,10 @@ pub struct StepReport {
 
 impl StepReport {
     /// Measures energies, angle errors and singular vertices of `x` (variables of `problem`).
-    pub(crate) fn measure(problem: &FieldProblem, x: &[f64]) -> StepReport {
-        let mut report = StepReport { energies: energies(problem, x), ..StepReport::default() };
+    /// `evaluated` holds residuals the solver already evaluated at `x`, if any (see
+    /// [`Evaluated`]).
+    pub(crate) fn measure(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>) -> StepReport {
+        let mut report = StepReport { energies: energies(problem, x, evaluated), ..StepReport::default() };
         let mesh = problem.mesh();
         let field = &x[..mesh.vertex_count()];
         let frames = measured_angles(mesh, field, problem.interior());
@@ -99,10 +101,36 @@ fn angle_error(family: Family, measured: f64, theta: f64) -> f64 {
     }
 }
 
-fn energies(problem: &FieldProblem, x: &[f64]) -> Energies {
+/// Residuals the solver evaluated at the current variables, with the weights they carry.
+pub(crate) struct Evaluated<'a> {
+    pub weights: Weights,
+    /// The residuals of block `b`, if evaluated there.
+    pub residuals: &'a (dyn Fn(usize) -> Option<&'a [f64]> + Sync),
+}
+
+impl Evaluated<'_> {
+    /// Block `b`'s squared residual norms with unit weights, split as in [`block_squares`]: the
+    /// evaluated residuals carry `√λ` of their term, so their squares over λ are the unit ones
+    /// up to rounding. `None` if the block was not evaluated or λ is too small to divide by.
+    fn unit_squares(&self, problem: &FieldProblem, b: usize) -> Option<(f64, f64)> {
+        let weight = match problem.block(b) {
+            Block::Fair(_) => self.weights.fair,
+            Block::Grad(_) => self.weights.grad,
+            Block::Curve(_) => self.weights.angle,
+        };
+        // Below √MIN_POSITIVE, underflow in the weighted squares could matter.
+        if weight < f64::MIN_POSITIVE.sqrt() {
+            return None;
+        }
+        let (first, rest) = split_squares(problem, b, (self.residuals)(b)?);
+        Some((first / weight, rest / weight))
+    }
+}
+
+fn energies(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>) -> Energies {
     let w = problem.weights();
     let mut e = Energies::default();
-    for (b, (first, rest)) in block_squares(problem, x, 0..problem.block_count()).into_iter().enumerate() {
+    for (b, (first, rest)) in block_squares(problem, x, 0..problem.block_count(), evaluated).into_iter().enumerate() {
         match problem.block(b) {
             Block::Fair(_) => e.fair += first,
             Block::Grad(_) => e.grad += first,
@@ -120,25 +148,35 @@ fn energies(problem: &FieldProblem, x: &[f64]) -> Energies {
 /// [`Energies`] that says whether the level sets already form the family.
 pub(crate) fn curve_energy(problem: &FieldProblem, x: &[f64]) -> f64 {
     let curves = problem.first_curve_block()..problem.block_count();
-    block_squares(problem, x, curves).into_iter().map(|(first, rest)| first + rest).sum()
+    block_squares(problem, x, curves, None).into_iter().map(|(first, rest)| first + rest).sum()
 }
 
 /// Squared residual norms of `blocks` with unit weights, split for pseudo-geodesic curve blocks
-/// into the angle rows (Eq. 8) and the frame rows (Eq. 9–10). Evaluated in parallel, returned in
-/// block order so that sums do not depend on the threads.
-fn block_squares(problem: &FieldProblem, x: &[f64], blocks: std::ops::Range<usize>) -> Vec<(f64, f64)> {
+/// into the angle rows (Eq. 8) and the frame rows (Eq. 9–10): from the `evaluated` residuals
+/// where there are some, otherwise evaluated in parallel. Returned in block order so that sums
+/// do not depend on the threads.
+fn block_squares(problem: &FieldProblem, x: &[f64], blocks: std::ops::Range<usize>, evaluated: Option<&Evaluated<'_>>) -> Vec<(f64, f64)> {
     let unit = Weights { fair: 1.0, grad: 1.0, angle: 1.0 };
     blocks
         .into_par_iter()
         .map_init(Vec::new, |residuals, b| {
+            if let Some(squares) = evaluated.and_then(|e| e.unit_squares(problem, b)) {
+                return squares;
+            }
             residuals.clear();
             residuals.resize(problem.block_residual_count(b), 0.0);
             problem.evaluate_weighted(b, &unit, x, residuals, None);
-            let squares = |r: &[f64]| r.iter().map(|v| v * v).sum::<f64>();
-            match (problem.block(b), problem.family()) {
-                (Block::Curve(_), Family::PseudoGeodesic { .. }) => (squares(&residuals[..2]), squares(&residuals[2..])),
-                _ => (squares(residuals), 0.0),
-            }
+            split_squares(problem, b, residuals)
         })
         .collect()
+}
+
+/// Squared norms of a block's residuals: (angle rows, frame rows) for a pseudo-geodesic curve
+/// block, (all rows, 0) otherwise.
+fn split_squares(problem: &FieldProblem, b: usize, residuals: &[f64]) -> (f64, f64) {
+    let squares = |r: &[f64]| r.iter().map(|v| v * v).sum::<f64>();
+    match (problem.block(b), problem.family()) {
+        (Block::Curve(_), Family::PseudoGeodesic { .. }) => (squares(&residuals[..2]), squares(&residuals[2..])),
+        _ => (squares(residuals), 0.0),
+    }
 }
