@@ -60,31 +60,18 @@ impl SubstructuredCholesky {
         let n = col_ptr.len() - 1;
         let parts = bisect(col_ptr, row_idx).unwrap_or_else(|| vec![Part::Domain(0); n]);
         let separator: Vec<usize> = (0..n).filter(|&v| parts[v] == Part::Separator).collect();
-        let domain_count = if parts.contains(&Part::Domain(1)) { 2 } else { 1 };
-        let mut domains = Vec::with_capacity(domain_count);
+        // The two domains' orderings and symbolic analyses are independent: run them at once.
+        let analyse = |d: u8| Domain::analyse(col_ptr, row_idx, &parts, d, &separator);
+        let mut domains = if parts.contains(&Part::Domain(1)) {
+            let (first, second) = rayon::join(|| analyse(0), || analyse(1));
+            vec![first?, second?]
+        } else {
+            vec![analyse(0)?]
+        };
         let mut offset = 0;
-        let mut local = vec![usize::MAX; n];
-        for d in 0..domain_count as u8 {
-            let interior: Vec<usize> = (0..n).filter(|&v| parts[v] == Part::Domain(d)).collect();
-            for (i, &v) in interior.iter().chain(&separator).enumerate() {
-                local[v] = i;
-            }
-            let cholesky = SparseCholesky::analyse(col_ptr, row_idx, &interior, &separator, &local)?;
-            for &v in &interior {
-                local[v] = usize::MAX;
-            }
-            let size = interior.len() + separator.len();
-            let len = cholesky.original_positions().len();
-            let s = separator.len();
-            domains.push(Domain {
-                cholesky,
-                offset,
-                work: vec![0.0; size],
-                separator_factor: padded_square(s),
-                separator_product: padded_square(s),
-                separator_reduction: vec![0.0; s],
-            });
-            offset += len;
+        for domain in &mut domains {
+            domain.offset = offset;
+            offset += domain.cholesky.original_positions().len();
         }
         let s = separator.len();
         let dense_scratch = MemBuffer::try_new(StackReq::or(
@@ -221,6 +208,27 @@ fn padded_square(s: usize) -> Mat<f64> {
 }
 
 impl Domain {
+    /// Ordering and symbolic analysis of domain `d` of the split `parts` (its interior, then the
+    /// separator); its storage offset is set by the caller.
+    fn analyse(col_ptr: &[usize], row_idx: &[usize], parts: &[Part], d: u8, separator: &[usize]) -> Result<Self, SolverError> {
+        let n = col_ptr.len() - 1;
+        let interior: Vec<usize> = (0..n).filter(|&v| parts[v] == Part::Domain(d)).collect();
+        let mut local = vec![usize::MAX; n];
+        for (i, &v) in interior.iter().chain(separator).enumerate() {
+            local[v] = i;
+        }
+        let cholesky = SparseCholesky::analyse(col_ptr, row_idx, &interior, separator, &local)?;
+        let s = separator.len();
+        Ok(Domain {
+            cholesky,
+            offset: 0,
+            work: vec![0.0; interior.len() + s],
+            separator_factor: padded_square(s),
+            separator_product: padded_square(s),
+            separator_reduction: vec![0.0; s],
+        })
+    }
+
     /// Numeric factorisation of the domain matrix, then R⁽ᵈ⁾ and R⁽ᵈ⁾R⁽ᵈ⁾ᵀ.
     fn factorize(&mut self, values: &[f64]) -> bool {
         let len = self.cholesky.original_positions().len();
