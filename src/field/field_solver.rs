@@ -6,10 +6,9 @@ use super::error::FieldError;
 use super::gradient_norm::mean_gradient_norm;
 use super::params::{Family, FieldParams, Weights, SETTLED_CURVE_ENERGY, SETTLING_ITERATIONS};
 use super::problem::FieldProblem;
-use super::report::{curve_energy, Evaluated, StepReport};
+use super::report::{curve_energy, level_frames, Evaluated, StepReport};
 use crate::mesh::{TriMesh, Vec3};
 use crate::solver::{LeastSquaresProblem, LevenbergMarquardt};
-use rayon::prelude::*;
 
 /// The factors between the caller's units and the normalised problem.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -39,6 +38,9 @@ pub struct FieldSolver {
     pub(super) iterations: usize,
     pub(super) converged: bool,
     pub(super) last_report: StepReport,
+    /// Level frames at the interior vertices for the current field values (`None` once the
+    /// field has moved): measured for the report, reused by the next orientation test.
+    frames: Option<Vec<Option<LevelFrame>>>,
 }
 
 impl FieldSolver {
@@ -80,6 +82,7 @@ impl FieldSolver {
             iterations: 0,
             converged: false,
             last_report: StepReport::default(),
+            frames: None,
         })
     }
 
@@ -101,6 +104,9 @@ impl FieldSolver {
             flips += self.reorient_side_vectors();
             iterated_weights = Some(self.problem.weights());
             let outcome = self.lm.iterate(&self.problem, &mut self.x)?;
+            if outcome.accepted {
+                self.frames = None;
+            }
             ran += 1;
             self.iterations += 1;
             self.stage_iterations += 1;
@@ -245,27 +251,31 @@ impl FieldSolver {
 
     /// The orientation test of Sec. 3.2.2: where `det(q − p, u, n) ≤ 0`, re-initialise
     /// `u = n × (q − p)` normalised. Returns how many side vectors were flipped. The level frames
-    /// are measured in parallel; each vertex's decision depends on its own data only.
+    /// are those the last report measured at this field, or are measured now.
     fn reorient_side_vectors(&mut self) -> usize {
         if !matches!(self.problem.family(), Family::PseudoGeodesic { .. }) {
             return 0;
         }
-        let flipped: Vec<Option<Vec3>> = (0..self.problem.interior().len())
-            .into_par_iter()
-            .map(|k| {
-                let v = self.problem.interior()[k] as usize;
-                let frame = level_frame(self.problem.mesh(), self.internal_field(), v)?;
-                (self.auxiliary(k, 3).dot(&frame.side) <= 0.0).then_some(frame.side)
-            })
-            .collect();
+        let frames = self.take_frames();
         let mut flips = 0;
-        for (k, side) in flipped.iter().enumerate() {
-            if let Some(side) = side {
-                self.set_auxiliary(k, 3, side);
-                flips += 1;
+        for (k, frame) in frames.iter().enumerate() {
+            if let Some(frame) = frame {
+                if self.auxiliary(k, 3).dot(&frame.side) <= 0.0 {
+                    self.set_auxiliary(k, 3, &frame.side);
+                    flips += 1;
+                }
             }
         }
+        // Still the frames of the current field: only side vectors moved.
+        self.frames = Some(frames);
         flips
+    }
+
+    /// The level frames of the current field at the interior vertices, measured (in parallel)
+    /// unless kept from the last measurement.
+    fn take_frames(&mut self) -> Vec<Option<LevelFrame>> {
+        let frames = self.frames.take();
+        frames.unwrap_or_else(|| level_frames(self.problem.mesh(), self.internal_field(), self.problem.interior()))
     }
 
     /// Whether the unweighted curve terms at x ([`curve_energy`]) have fallen to
@@ -287,18 +297,21 @@ impl FieldSolver {
 
     /// The report at x. `iterated_weights`: the weights of the iteration that moved to x, whose
     /// residuals there the solver kept (the energies are taken from them).
-    fn measure(&self, iterations_this_step: usize, flips: usize, iterated_weights: Option<Weights>) -> StepReport {
+    fn measure(&mut self, iterations_this_step: usize, flips: usize, iterated_weights: Option<Weights>) -> StepReport {
+        let frames = self.take_frames();
         let accepted = |b| self.lm.accepted_residuals(b);
         let evaluated = iterated_weights.map(|weights| Evaluated { weights, residuals: &accepted });
-        StepReport {
+        let report = StepReport {
             iterations: self.iterations,
             iterations_this_step,
             stage: self.stage,
             flips,
             damping: self.lm.damping(),
             converged: self.converged,
-            ..StepReport::measure(&self.problem, &self.x, evaluated.as_ref())
-        }
+            ..StepReport::measure(&self.problem, &self.x, evaluated.as_ref(), &frames)
+        };
+        self.frames = Some(frames);
+        report
     }
 }
 

@@ -1,6 +1,6 @@
 //! What a field optimisation reports after each call to `step`.
 
-use super::darboux::level_frame;
+use super::darboux::{level_frame, LevelFrame};
 use super::params::{Family, Weights};
 use super::problem::{Block, FieldProblem};
 use crate::mesh::TriMesh;
@@ -53,18 +53,15 @@ pub struct StepReport {
 impl StepReport {
     /// Measures energies, angle errors and singular vertices of `x` (variables of `problem`).
     /// `evaluated` holds residuals the solver already evaluated at `x`, if any (see
-    /// [`Evaluated`]).
-    pub(crate) fn measure(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>) -> StepReport {
+    /// [`Evaluated`]); `frames` are the [`level_frames`] of `x` at the problem's interior vertices.
+    pub(crate) fn measure(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>, frames: &[Option<LevelFrame>]) -> StepReport {
         let mut report = StepReport { energies: energies(problem, x, evaluated), ..StepReport::default() };
-        let mesh = problem.mesh();
-        let field = &x[..mesh.vertex_count()];
-        let frames = measured_angles(mesh, field, problem.interior());
         let mut sum_squares = 0.0;
         for (k, (&v, frame)) in problem.interior().iter().zip(frames).enumerate() {
             match frame {
                 None => report.singular_vertices.push(v),
-                Some(measured) => {
-                    if let Some(measured) = measured {
+                Some(frame) => {
+                    if let Some(measured) = frame.signed_angle_degrees() {
                         let error = angle_error(problem.family(), measured, problem.target(k).degrees);
                         sum_squares += error * error;
                         report.angle_error_max_degrees = report.angle_error_max_degrees.max(error);
@@ -85,10 +82,13 @@ impl StepReport {
 /// Frames are measured in parallel and returned in the order of `vertices` (the result does not
 /// depend on the threads).
 pub(crate) fn measured_angles(mesh: &TriMesh, field: &[f64], vertices: &[u32]) -> Vec<Option<Option<f64>>> {
-    vertices
-        .par_iter()
-        .map(|&v| level_frame(mesh, field, v as usize).map(|frame| frame.signed_angle_degrees()))
-        .collect()
+    level_frames(mesh, field, vertices).into_iter().map(|frame| frame.map(|f| f.signed_angle_degrees())).collect()
+}
+
+/// The level frames at `vertices` (`None` at singular ones), measured in parallel and returned
+/// in the order of `vertices`.
+pub(crate) fn level_frames(mesh: &TriMesh, field: &[f64], vertices: &[u32]) -> Vec<Option<LevelFrame>> {
+    vertices.par_iter().map(|&v| level_frame(mesh, field, v as usize)).collect()
 }
 
 /// Angle error of a measured signed angle. Geodesics and asymptotic curves have no sign:
