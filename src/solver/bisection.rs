@@ -11,8 +11,13 @@
 /// Smallest dimension worth splitting: below it the dense separator work outweighs the gain.
 const MIN_DIMENSION: usize = 400;
 
-/// Largest separator accepted, as a fraction 1/`MAX_SEPARATOR_DIVISOR` of the dimension.
+/// Largest separator accepted: the smaller of the dimension n over `MAX_SEPARATOR_DIVISOR` and
+/// `MAX_SEPARATOR_PER_ROOT`·√n. The separator's Schur complement is dense (s² memory, s³/3
+/// work), so it must stay small next to the sparse factorisations; a surface mesh's pattern
+/// splits with s ≈ 2.2√n (the hall roof at 600 to 50,000 vertices), while long-range couplings
+/// (possible in a general least-squares problem) make separators grow towards a fraction of n.
 const MAX_SEPARATOR_DIVISOR: usize = 8;
+const MAX_SEPARATOR_PER_ROOT: f64 = 4.0;
 
 /// The part of a variable in a bisection.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -24,7 +29,8 @@ pub(crate) enum Part {
 
 /// Splits the variables of the symmetric pattern given by its upper triangle (CSC, `col_ptr`,
 /// `row_idx`) into two domains and a separator. `None` when splitting does not pay: a small or
-/// disconnected graph, or a separator larger than an eighth of the variables.
+/// disconnected graph, or a separator above the limits of `MAX_SEPARATOR_DIVISOR` and
+/// `MAX_SEPARATOR_PER_ROOT`.
 pub(crate) fn bisect(col_ptr: &[usize], row_idx: &[usize]) -> Option<Vec<Part>> {
     let n = col_ptr.len() - 1;
     if n < MIN_DIMENSION {
@@ -52,7 +58,8 @@ pub(crate) fn bisect(col_ptr: &[usize], row_idx: &[usize]) -> Option<Vec<Part>> 
     let count = |part: Part| parts.iter().filter(|&&p| p == part).count();
     let separator = count(Part::Separator);
     let balanced = count(Part::Domain(0)) > 0 && count(Part::Domain(1)) > 0;
-    (balanced && separator * MAX_SEPARATOR_DIVISOR <= n).then_some(parts)
+    let small = separator * MAX_SEPARATOR_DIVISOR <= n && separator as f64 <= MAX_SEPARATOR_PER_ROOT * (n as f64).sqrt();
+    (balanced && small).then_some(parts)
 }
 
 /// The last vertex reached at the greatest distance (ties go to the larger index).
@@ -167,6 +174,29 @@ mod tests {
         // A cut across the grid: at most the diagonal of the grid's extent, far below w·h / 8.
         assert!(separator <= w + h, "separator of {separator} vertices");
         assert!(first.abs_diff(second) <= separator, "domains of {first} and {second} vertices");
+    }
+
+    #[test]
+    fn long_range_couplings_that_swell_the_separator_keep_one_domain() {
+        // A 100 × 100 grid splits with a separator of about 100 (≤ 4√n = 400).
+        let (col_ptr, row_idx) = grid(100, 100);
+        assert!(bisect(&col_ptr, &row_idx).is_some());
+        // 100 couplings between far-apart vertices: the cut crosses them all (about 630
+        // variables, still below n/8 = 1,250), which would make the dense part dominate.
+        let n = 100 * 100;
+        let mut columns: Vec<Vec<usize>> = (0..n).map(|c| row_idx[col_ptr[c]..col_ptr[c + 1]].to_vec()).collect();
+        for k in 0..100 {
+            let (a, b) = ((k * 7919) % n, (k * 104_729 + 5000) % n);
+            columns[a.max(b)].push(a.min(b));
+        }
+        let (mut col_ptr, mut row_idx) = (vec![0], Vec::new());
+        for mut column in columns {
+            column.sort_unstable();
+            column.dedup();
+            row_idx.extend(column);
+            col_ptr.push(row_idx.len());
+        }
+        assert!(bisect(&col_ptr, &row_idx).is_none());
     }
 
     #[test]
