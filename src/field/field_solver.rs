@@ -279,20 +279,16 @@ impl FieldSolver {
     }
 
     /// Whether the unweighted curve terms at x ([`curve_energy`]) have fallen to
-    /// [`SETTLED_CURVE_ENERGY`]. The curve residuals the solver evaluated at x carry the factor
-    /// `√λ_angle`, so their energy over `λ_angle` equals the unweighted one up to rounding: while
-    /// it is above twice the threshold, the exact evaluation with unit weights is skipped.
+    /// [`SETTLED_CURVE_ENERGY`], after an accepted iteration. The residuals it evaluated at x give
+    /// them up to rounding ([`Evaluated`]); only within twice the threshold are they evaluated
+    /// again, exactly, with unit weights.
     fn curves_settled(&self) -> bool {
-        let angle = self.problem.weights().angle;
-        let curves = self.problem.first_curve_block()..self.problem.block_count();
-        let weighted: Option<f64> = curves.map(|b| self.lm.accepted_residuals(b).map(|r| r.iter().map(|v| v * v).sum::<f64>())).sum();
-        // Below √MIN_POSITIVE, underflow in the weighted squares could matter; then always measure.
-        if let Some(weighted) = weighted.filter(|_| angle >= f64::MIN_POSITIVE.sqrt()) {
-            if weighted / angle > 2.0 * SETTLED_CURVE_ENERGY {
-                return false;
-            }
+        let accepted = |b| self.lm.accepted_residuals(b);
+        let evaluated = Evaluated { weights: self.problem.weights(), residuals: &accepted };
+        if curve_energy(&self.problem, &self.x, Some(&evaluated)) > 2.0 * SETTLED_CURVE_ENERGY {
+            return false;
         }
-        curve_energy(&self.problem, &self.x) <= SETTLED_CURVE_ENERGY
+        curve_energy(&self.problem, &self.x, None) <= SETTLED_CURVE_ENERGY
     }
 
     /// The report at x. `iterated_weights`: the weights of the iteration that moved to x, whose

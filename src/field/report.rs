@@ -145,10 +145,11 @@ fn energies(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>
 }
 
 /// The unweighted curve terms `E_angle + E_frame` (or `E_geo`, `E_asy`) of `x`: the part of
-/// [`Energies`] that says whether the level sets already form the family.
-pub(crate) fn curve_energy(problem: &FieldProblem, x: &[f64]) -> f64 {
+/// [`Energies`] that says whether the level sets already form the family; from the `evaluated`
+/// residuals where there are some.
+pub(crate) fn curve_energy(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>) -> f64 {
     let curves = problem.first_curve_block()..problem.block_count();
-    block_squares(problem, x, curves, None).into_iter().map(|(first, rest)| first + rest).sum()
+    block_squares(problem, x, curves, evaluated).into_iter().map(|(first, rest)| first + rest).sum()
 }
 
 /// Squared residual norms of `blocks` with unit weights, split for pseudo-geodesic curve blocks
