@@ -6,7 +6,8 @@ use crate::mesh::{closest_barycentric, TriMesh, Vec3};
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SurfacePoint {
     pub point: Vec3,
-    /// Unit normal interpolated linearly (barycentrically) from the vertex normals.
+    /// Unit normal interpolated linearly (barycentrically) from the smooth (second-order) vertex
+    /// normals, [`TriMesh::smooth_normals`].
     pub normal: Vec3,
     pub distance: f64,
 }
@@ -55,7 +56,7 @@ impl<'a> SurfaceProjector<'a> {
         }
         let (distance, f, w) = best?;
         let face = self.mesh.faces()[f];
-        let normals = face.map(|v| self.mesh.vertex_normals()[v as usize]);
+        let normals = face.map(|v| self.mesh.smooth_normals()[v as usize]);
         let corners = face.map(|v| self.mesh.positions()[v as usize]);
         let normal = (normals[0] * w[0] + normals[1] * w[1] + normals[2] * w[2])
             .try_normalize(0.0)
