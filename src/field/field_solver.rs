@@ -64,6 +64,38 @@ impl FieldSolver {
         Ok(solver)
     }
 
+    /// Starts over from `initial_field` with `params` (same family; schedule, weights, gradient
+    /// target and tolerances may differ), keeping the prepared problem and the solver's symbolic
+    /// analysis: what trying many starts on one mesh needs (see
+    /// [`crate::initialisation::StartSearch`]). Errors as [`Self::new`], and
+    /// `InvalidParameter { name: "family" }` for another family.
+    pub fn restart(&mut self, initial_field: &[f64], params: FieldParams) -> Result<(), FieldError> {
+        validate_params(&params)?;
+        if params.family != self.problem.family() {
+            return Err(FieldError::InvalidParameter { name: "family", message: "a restart keeps the solver's family".into() });
+        }
+        validate_field(self.problem.mesh(), initial_field)?;
+        let gradient = mean_gradient_norm(self.problem.mesh(), initial_field);
+        if !(gradient > 0.0 && gradient.is_finite()) {
+            return Err(FieldError::ConstantField);
+        }
+        let field_scale = 1.0 / gradient;
+        let length = self.scales.length;
+        self.problem.set_gradient_target(params.gradient_target.map_or(1.0, |r| r * field_scale / length));
+        self.scales = Scales { field: field_scale, length };
+        self.params = params;
+        self.x.iter_mut().for_each(|x| *x = 0.0);
+        for (x, f) in self.x.iter_mut().zip(initial_field) {
+            *x = f * field_scale;
+        }
+        self.iterations = 0;
+        self.frames = None;
+        self.enter_stage(0);
+        self.initialize_auxiliaries();
+        self.last_report = self.measure(0, 0, None);
+        Ok(())
+    }
+
     /// A solver in its first stage with all variables zero, on an already unit-scaled mesh.
     pub(crate) fn assemble(unit_mesh: TriMesh, params: FieldParams, gradient_target: f64, scales: Scales) -> Result<FieldSolver, FieldError> {
         let (stage, weights) = stage_weights(&params, 0);

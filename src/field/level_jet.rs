@@ -55,8 +55,10 @@ pub(crate) struct JetStencils {
     vertices: Vec<u32>,
     /// `∂(c, a, b, A, B, C)/∂F_u` for each stencil vertex `u`.
     weights: Vec<[f64; UNKNOWNS]>,
-    /// Each stencil vertex's chart coordinates `(x, y)`.
-    charts: Vec<[f64; 2]>,
+    /// Per owner, the rows of `E_fit`: an orthonormal basis `L` of what the quadratic fit cannot
+    /// represent (`LᵀL = I − H`, `H` the fit's hat matrix), `(m − 6) × m` row-major.
+    residual_operators: Vec<f64>,
+    residual_offsets: Vec<usize>,
     quadrics: Vec<LocalQuadric>,
     /// σ: mean length of the star's edges at each owner.
     scales: Vec<f64>,
@@ -68,7 +70,7 @@ pub(crate) struct JetStencil<'a> {
     /// The stencil's vertices (the owner among them), in the order of the block's field columns.
     pub vertices: &'a [u32],
     weights: &'a [[f64; UNKNOWNS]],
-    charts: &'a [[f64; 2]],
+    residual_operator: &'a [f64],
     quadric: &'a LocalQuadric,
     scale: f64,
 }
@@ -77,28 +79,41 @@ impl JetStencils {
     /// Stencils for `owners` (vertices of `mesh`), each with its vertex's local quadric.
     pub fn new(mesh: &TriMesh, owners: &[u32], quadrics: &[LocalQuadric]) -> JetStencils {
         let built: Vec<FieldFit> = owners.par_iter().zip(quadrics).map(|(&v, quadric)| field_fit(mesh, quadric, v as usize)).collect();
-        let mut stencils =
-            JetStencils { offsets: vec![0], vertices: Vec::new(), weights: Vec::new(), charts: Vec::new(), quadrics: quadrics.to_vec(), scales: Vec::new() };
+        let mut stencils = JetStencils::empty();
+        stencils.quadrics = quadrics.to_vec();
         for (&v, fit) in owners.iter().zip(built) {
             stencils.vertices.extend(fit.vertices);
             stencils.weights.extend(fit.weights);
-            stencils.charts.extend(fit.charts);
+            stencils.residual_operators.extend(fit.residual_operator);
+            stencils.residual_offsets.push(stencils.residual_operators.len());
             stencils.offsets.push(stencils.vertices.len());
             stencils.scales.push(mean_star_edge(mesh, v as usize));
         }
         stencils
     }
 
+    fn empty() -> JetStencils {
+        JetStencils {
+            offsets: vec![0],
+            vertices: Vec::new(),
+            weights: Vec::new(),
+            residual_operators: Vec::new(),
+            residual_offsets: vec![0],
+            quadrics: Vec::new(),
+            scales: Vec::new(),
+        }
+    }
+
     /// The stencils of the owners at positions `keep` (increasing), in that order.
     pub fn select(&self, keep: &[u32]) -> JetStencils {
-        let mut selected =
-            JetStencils { offsets: vec![0], vertices: Vec::new(), weights: Vec::new(), charts: Vec::new(), quadrics: Vec::new(), scales: Vec::new() };
+        let mut selected = JetStencils::empty();
         for &k in keep {
             let k = k as usize;
             let range = self.offsets[k]..self.offsets[k + 1];
             selected.vertices.extend_from_slice(&self.vertices[range.clone()]);
-            selected.weights.extend_from_slice(&self.weights[range.clone()]);
-            selected.charts.extend_from_slice(&self.charts[range]);
+            selected.weights.extend_from_slice(&self.weights[range]);
+            selected.residual_operators.extend_from_slice(&self.residual_operators[self.residual_offsets[k]..self.residual_offsets[k + 1]]);
+            selected.residual_offsets.push(selected.residual_operators.len());
             selected.offsets.push(selected.vertices.len());
             selected.quadrics.push(self.quadrics[k]);
             selected.scales.push(self.scales[k]);
@@ -111,8 +126,8 @@ impl JetStencils {
         let range = self.offsets[k]..self.offsets[k + 1];
         JetStencil {
             vertices: &self.vertices[range.clone()],
-            weights: &self.weights[range.clone()],
-            charts: &self.charts[range],
+            weights: &self.weights[range],
+            residual_operator: &self.residual_operators[self.residual_offsets[k]..self.residual_offsets[k + 1]],
             quadric: &self.quadrics[k],
             scale: self.scales[k],
         }
@@ -129,11 +144,11 @@ fn mean_star_edge(mesh: &TriMesh, v: usize) -> f64 {
 /// the two-ring at a boundary vertex, grown ring by ring until the fit is well posed) and, per
 /// neighbour, its weights in `(a, b, A, B, C)`. An empty stencil where no fit is well posed (the
 /// vertex then carries no curve term).
-/// A vertex's field fit: its stencil, the fit's weights and the stencil's chart coordinates.
+/// A vertex's field fit: its stencil, the fit's weights and its residual operator.
 struct FieldFit {
     vertices: Vec<u32>,
     weights: Vec<[f64; UNKNOWNS]>,
-    charts: Vec<[f64; 2]>,
+    residual_operator: Vec<f64>,
 }
 
 /// The quadratic basis `(1, x, y, ½x², xy, ½y²)` of the fit.
@@ -148,30 +163,47 @@ fn field_fit(mesh: &TriMesh, quadric: &LocalQuadric, v: usize) -> FieldFit {
         if vertices.len() < UNKNOWNS + 2 {
             continue;
         }
-        let charts: Vec<[f64; 2]> = vertices
-            .iter()
-            .map(|&u| {
-                let (x, y) = quadric.chart(&origin, &mesh.positions()[u as usize]);
-                [x, y]
-            })
-            .collect();
         let mut design = DMatrix::zeros(vertices.len(), UNKNOWNS);
-        for (row, [x, y]) in charts.iter().enumerate() {
-            for (column, value) in basis(*x, *y).into_iter().enumerate() {
+        for (row, &u) in vertices.iter().enumerate() {
+            let (x, y) = quadric.chart(&origin, &mesh.positions()[u as usize]);
+            for (column, value) in basis(x, y).into_iter().enumerate() {
                 design[(row, column)] = value;
             }
         }
-        let svd = design.svd(true, true);
+        let svd = design.clone().svd(true, true);
         if !(svd.singular_values.min() > CONDITION * svd.singular_values.max()) {
             continue;
         }
         let Ok(inverse) = svd.pseudo_inverse(0.0) else { continue };
         let weights: Vec<[f64; UNKNOWNS]> = (0..vertices.len()).map(|j| std::array::from_fn(|c| inverse[(c, j)])).collect();
-        if weights.iter().all(|w| w.iter().all(|x| x.is_finite())) {
-            return FieldFit { vertices, weights, charts };
+        let residual_operator = residual_operator(&design, &inverse);
+        if weights.iter().all(|w| w.iter().all(|x| x.is_finite())) && residual_operator.iter().all(|x| x.is_finite()) {
+            return FieldFit { vertices, weights, residual_operator };
         }
     }
-    FieldFit { vertices: Vec::new(), weights: Vec::new(), charts: Vec::new() }
+    FieldFit { vertices: Vec::new(), weights: Vec::new(), residual_operator: Vec::new() }
+}
+
+/// Rows `L` ((m − 6) × m, row-major) with `LᵀL = I − H`, `H = D D⁺` the hat matrix of the fit:
+/// the eigenvectors of the projector `I − H` for eigenvalue 1, ordered by their largest
+/// component's index and sign-normalised so the result is deterministic.
+fn residual_operator(design: &DMatrix<f64>, inverse: &DMatrix<f64>) -> Vec<f64> {
+    let m = design.nrows();
+    let projector = DMatrix::identity(m, m) - design * inverse;
+    let eigen = nalgebra::SymmetricEigen::new((&projector + projector.transpose()) * 0.5);
+    let mut rows: Vec<Vec<f64>> = (0..m)
+        .filter(|&k| eigen.eigenvalues[k] > 0.5)
+        .map(|k| {
+            let v = eigen.eigenvectors.column(k);
+            let sign = if v[v.iamax()] < 0.0 { -1.0 } else { 1.0 };
+            v.iter().map(|x| sign * x).collect()
+        })
+        .collect();
+    rows.sort_by(|a, b| {
+        let key = |r: &Vec<f64>| r.iter().enumerate().fold((0, 0.0f64), |best, (i, x)| if x.abs() > best.1 { (i, x.abs()) } else { best }).0;
+        key(a).cmp(&key(b)).then_with(|| b.iter().zip(a.iter()).map(|(x, y)| x.total_cmp(y)).find(|o| o.is_ne()).unwrap_or(std::cmp::Ordering::Equal))
+    });
+    rows.concat()
 }
 
 /// The star of an interior vertex `v` and its flaps (the third vertex of the triangle beyond each
@@ -311,25 +343,25 @@ impl JetStencil<'_> {
         c
     }
 
-    /// Rows of the fit's residuals, one per stencil vertex: `scale · (F_u − F̃(x_u))`, what the
-    /// local quadratic cannot represent (see [`super::problem`]'s `E_fit`), and their Jacobian
-    /// (row-major, one column per stencil vertex; linear in the field, so it does not depend on it).
+    /// Rows of `E_fit` (see [`super::problem`]): `scale · L F`, whose squared norm is that of the
+    /// fit's residuals `F_u − F̃(x_u)` over the stencil (what the local quadratic cannot
+    /// represent), `m − 6` of them; their Jacobian is `scale · L` (row-major, one column per
+    /// stencil vertex), constant.
     pub fn fit_residuals(&self, field: &[f64], scale: f64, residuals: &mut [f64], jacobian: Option<&mut [f64]>) {
-        let c = self.fit(field);
-        for (row, (&u, [x, y])) in self.vertices.iter().zip(self.charts).enumerate() {
-            let fitted: f64 = basis(*x, *y).iter().zip(&c).map(|(b, c)| b * c).sum();
-            residuals[row] = scale * (field[u as usize] - fitted);
+        let m = self.vertices.len();
+        for (r, row) in residuals.iter_mut().zip(self.residual_operator.chunks_exact(m)) {
+            *r = scale * row.iter().zip(self.vertices).map(|(l, &u)| l * field[u as usize]).sum::<f64>();
         }
         if let Some(jac) = jacobian {
-            let m = self.vertices.len();
-            for (row, [x, y]) in self.charts.iter().enumerate() {
-                let b = basis(*x, *y);
-                for (column, w) in self.weights.iter().enumerate() {
-                    let hat: f64 = b.iter().zip(w).map(|(b, w)| b * w).sum();
-                    jac[row * m + column] = scale * (f64::from(u8::from(row == column)) - hat);
-                }
+            for (j, l) in jac.iter_mut().zip(self.residual_operator) {
+                *j = scale * l;
             }
         }
+    }
+
+    /// Number of `E_fit` rows of this stencil.
+    pub fn fit_rows(&self) -> usize {
+        self.residual_operator.len() / self.vertices.len().max(1)
     }
 }
 

@@ -100,7 +100,7 @@ impl FieldParams {
             schedule: vec![stage(8, 1e-3, 1e-2, 1e-2), stage(8, 1e-3, 1e-3, 1.0)],
             weights: Weights { fair: 1e-3, grad: 1e-5, angle: 30.0 },
             gradient_target: None,
-            relative_tolerance: 1e-3,
+            relative_tolerance: 1e-2,
             lm: LmOptions::default(),
         }
     }

@@ -120,6 +120,10 @@ impl FieldProblem {
         self.weights
     }
 
+    pub(crate) fn set_gradient_target(&mut self, target: f64) {
+        self.gradient_target = target;
+    }
+
     /// Target `‖∇F‖` of `E_grad` on this problem's scale.
     pub(crate) fn gradient_target(&self) -> f64 {
         self.gradient_target
@@ -260,7 +264,7 @@ impl LeastSquaresProblem for FieldProblem {
             Block::Fair(_) => HessianEnergy::ROWS_PER_VERTEX,
             Block::Grad(_) => 1,
             Block::Curve(_) => self.curve_rows(),
-            Block::Fit(k) => self.jets.get(k).vertices.len(),
+            Block::Fit(k) => self.jets.get(k).fit_rows(),
         }
     }
 
