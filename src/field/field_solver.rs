@@ -45,8 +45,11 @@ pub struct FieldSolver {
 
 impl FieldSolver {
     /// Prepares the optimisation of `initial_field` (one value per vertex) on `mesh`.
-    pub fn new(mesh: &TriMesh, initial_field: &[f64], params: FieldParams) -> Result<FieldSolver, FieldError> {
+    /// The family is taken by name ([`super::Family::by_name`]): a pseudo-geodesic angle of 0°,
+    /// 90° or 180° optimises the asymptotic or geodesic energy of Eq. 13.
+    pub fn new(mesh: &TriMesh, initial_field: &[f64], mut params: FieldParams) -> Result<FieldSolver, FieldError> {
         validate_params(&params)?;
+        params.family = params.family.by_name();
         validate_field(mesh, initial_field)?;
         let (unit_mesh, length_scale) = mesh.unit_scaled();
         let gradient = mean_gradient_norm(&unit_mesh, initial_field);
@@ -69,8 +72,9 @@ impl FieldSolver {
     /// analysis: what trying many starts on one mesh needs (see
     /// [`crate::initialisation::StartSearch`]). Errors as [`Self::new`], and
     /// `InvalidParameter { name: "family" }` for another family.
-    pub fn restart(&mut self, initial_field: &[f64], params: FieldParams) -> Result<(), FieldError> {
+    pub fn restart(&mut self, initial_field: &[f64], mut params: FieldParams) -> Result<(), FieldError> {
         validate_params(&params)?;
+        params.family = params.family.by_name();
         if params.family != self.problem.family() {
             return Err(FieldError::InvalidParameter { name: "family", message: "a restart keeps the solver's family".into() });
         }

@@ -17,6 +17,27 @@ pub enum Family {
 }
 
 impl Family {
+    /// The family of curves whose binormal makes the angle `theta_degrees` with the surface
+    /// normal, by name: 0° and 180° are the asymptotic curves (`E_asy`, Eq. 13), 90° the geodesics
+    /// (`E_geo`), any other angle the pseudo-geodesics of that signed angle (`E_angle`, Eq. 8).
+    pub fn from_theta(theta_degrees: f64) -> Family {
+        Family::PseudoGeodesic { theta_degrees }.by_name()
+    }
+
+    /// This family with the degenerate pseudo-geodesic angles named: θ = 0° or 180° is
+    /// [`Family::Asymptotic`], θ = 90° [`Family::Geodesic`] (within 1e-9°). At those angles the
+    /// signed-angle rows of Eq. 8 degenerate (`sin θ cos θ = 0`, and at 0° any tangent direction
+    /// of the osculating plane satisfies them), while Eq. 13 states the family directly.
+    pub fn by_name(self) -> Family {
+        match self {
+            Family::PseudoGeodesic { theta_degrees } if theta_degrees.abs() < NAMED_ANGLE_TOLERANCE || (theta_degrees - 180.0).abs() < NAMED_ANGLE_TOLERANCE => {
+                Family::Asymptotic
+            }
+            Family::PseudoGeodesic { theta_degrees } if (theta_degrees - 90.0).abs() < NAMED_ANGLE_TOLERANCE => Family::Geodesic,
+            other => other,
+        }
+    }
+
     /// Target angle between binormal and normal in degrees.
     pub fn theta_degrees(&self) -> f64 {
         match *self {
@@ -37,6 +58,9 @@ impl Family {
         }
     }
 }
+
+/// Distance in degrees within which a pseudo-geodesic angle counts as 0°, 90° or 180°.
+const NAMED_ANGLE_TOLERANCE: f64 = 1e-9;
 
 /// The weights λ of Eq. 12. `angle` weighs whichever curve term the family uses
 /// (`E_angle`, `E_geo` or `E_asy`).
@@ -105,9 +129,10 @@ impl FieldParams {
         }
     }
 
-    /// Pseudo-geodesic defaults for a target angle in degrees.
+    /// Defaults for the family of target angle `theta_degrees` ([`Family::from_theta`]: the
+    /// pseudo-geodesics of that angle, or the asymptotic curves at 0° and 180°, the geodesics at 90°).
     pub fn pseudo_geodesic(theta_degrees: f64) -> Self {
-        Self::new(Family::PseudoGeodesic { theta_degrees })
+        Self::new(Family::from_theta(theta_degrees))
     }
 }
 

@@ -8,6 +8,9 @@ pub enum CliError {
     BadInput(String),
     /// A computation failed on valid input: exit code 1.
     Internal(String),
+    /// The computation ran and wrote its outputs, but they miss the asked angle (or have
+    /// flipped quads): exit code 3; the message starts with "no acceptable family".
+    NoAcceptableFamily(String),
 }
 
 impl CliError {
@@ -24,6 +27,7 @@ impl CliError {
         match self {
             CliError::BadInput(_) => 2,
             CliError::Internal(_) => 1,
+            CliError::NoAcceptableFamily(_) => 3,
         }
     }
 }
@@ -31,9 +35,18 @@ impl CliError {
 impl fmt::Display for CliError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            CliError::BadInput(message) | CliError::Internal(message) => f.write_str(message),
+            CliError::BadInput(message) | CliError::Internal(message) | CliError::NoAcceptableFamily(message) => f.write_str(message),
         }
     }
 }
 
 pub type CliResult<T> = Result<T, CliError>;
+
+/// A user-supplied token for an error message, cut to 80 characters with "…".
+pub fn clip(text: &str) -> String {
+    const LIMIT: usize = 80;
+    match text.char_indices().nth(LIMIT) {
+        Some((cut, _)) => format!("{}…", &text[..cut]),
+        None => text.to_string(),
+    }
+}

@@ -1,7 +1,7 @@
 //! `lamella`: the command-line front door of the crate. Without arguments it designs a θ = 60°
 //! rectifying strip pattern on the built-in hall roof into `./lamella-out/`; subcommands run the
 //! pipeline's steps one at a time on the same files. Exit codes: 0 success, 2 bad input,
-//! 1 internal failure.
+//! 1 internal failure, 3 no acceptable family (outputs written, but the strips miss θ).
 
 mod args;
 mod config;
@@ -26,7 +26,7 @@ mod unroll;
 
 use args::{Cli, Command};
 use clap::Parser;
-use error::CliResult;
+use error::{CliError, CliResult};
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
@@ -34,6 +34,10 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(&cli) {
         Ok(()) => ExitCode::SUCCESS,
+        Err(CliError::NoAcceptableFamily(message)) => {
+            eprintln!("lamella: {message}");
+            ExitCode::from(3)
+        }
         Err(error) => {
             eprintln!("lamella: error: {error}");
             ExitCode::from(error.exit_code())
