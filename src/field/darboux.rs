@@ -8,8 +8,6 @@ use super::level_jet::{JetStencils, LevelJet};
 use super::problem::level_jet_at;
 use crate::mesh::{TriMesh, Vec3};
 
-/// Below this `‖ê_p × ê_q‖` the level curve is straight at the vertex and its binormal undefined.
-const STRAIGHT: f64 = 1e-12;
 
 /// Frame of the level curve at a regular vertex.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -20,7 +18,9 @@ pub struct LevelFrame {
     pub normal: Vec3,
     /// Unit side vector `n × t`, which points along `+∇F` (Sec. 3.2.2).
     pub side: Vec3,
-    /// Unit discrete binormal `ê_p × ê_q` normalised (Sec. 3.1), `None` where the curve is straight.
+    /// Unit discrete binormal `ê_p × ê_q` normalised (Sec. 3.1), `None` where the curve is
+    /// straight: where its radius of curvature exceeds the model's size (the bounding-box
+    /// diagonal), as the curve-level measure of [`crate::quality`] has it.
     pub binormal: Option<Vec3>,
 }
 
@@ -35,10 +35,16 @@ impl LevelFrame {
     }
 }
 
-/// The frame of a level jet.
-pub(crate) fn frame_of_jet(jet: &LevelJet) -> LevelFrame {
-    let binormal = jet.to_p.unit().cross(&jet.to_q.unit()).try_normalize(STRAIGHT);
+/// The frame of a level jet on a model of size `model_size` (lengths in the jet's units).
+pub(crate) fn frame_of_jet(jet: &LevelJet, model_size: f64) -> LevelFrame {
+    let binormal = (jet.curvature() * model_size > 1.0).then(|| jet.to_p.unit().cross(&jet.to_q.unit()).try_normalize(0.0)).flatten();
     LevelFrame { tangent: jet.tangent.value, normal: jet.normal, side: jet.side.value, binormal }
+}
+
+/// The bounding-box diagonal of `mesh`.
+pub(crate) fn model_size(mesh: &TriMesh) -> f64 {
+    let (low, high) = mesh.bounding_box();
+    (high - low).norm()
 }
 
 /// The level frame at vertex `v` (panics if `v` is out of range or `field` shorter than the
@@ -46,5 +52,5 @@ pub(crate) fn frame_of_jet(jet: &LevelJet) -> LevelFrame {
 /// Fits the field around `v` on each call (the surface's fits are the mesh's own, made once).
 pub fn level_frame(mesh: &TriMesh, field: &[f64], v: usize) -> Option<LevelFrame> {
     let stencils = JetStencils::new(mesh, &[v as u32], &mesh.local_quadrics()[v..=v]);
-    Some(frame_of_jet(&level_jet_at(mesh, &stencils.get(0), v, field)?))
+    Some(frame_of_jet(&level_jet_at(mesh, &stencils.get(0), v, field)?, model_size(mesh)))
 }

@@ -272,9 +272,15 @@ pub(crate) struct LevelJet {
     pub to_p: JetVector,
     /// `e_q = v0 − q̃ = −σ t − ½σ² k`.
     pub to_q: JetVector,
+    curvature: f64,
 }
 
 impl LevelJet {
+    /// The curvature `‖k‖` of the level curve, in 1/length.
+    pub fn curvature(&self) -> f64 {
+        self.curvature
+    }
+
     /// The jet of `field` at the stencil's owner; `None` where the stencil is empty or the fitted
     /// gradient vanishes.
     pub fn at(stencil: &JetStencil, field: &[f64]) -> Option<LevelJet> {
@@ -326,6 +332,7 @@ impl LevelJet {
             side: JetVector { value: u, partials: du },
             to_p: chord(1.0),
             to_q: chord(-1.0),
+            curvature: k.norm(),
         })
     }
 }

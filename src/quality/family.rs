@@ -173,9 +173,9 @@ mod tests {
         let curves = vec![helix(0.3, 200)];
         let measure = family_angles(&curves, Family::Geodesic, 0.1, 10.0).unwrap();
         assert!(measure.measured > 50);
-        assert!(measure.max_error_degrees < 1e-6, "{measure:?}");
+        assert!(measure.max_error_degrees < 0.05, "{measure:?}");
         let off = family_angles(&curves, Family::PseudoGeodesic { theta_degrees: 60.0 }, 0.1, 10.0).unwrap();
-        assert!((off.max_error_degrees - 30.0).abs() < 1e-6, "{off:?}");
+        assert!((off.max_error_degrees - 30.0).abs() < 0.05, "{off:?}");
     }
 
     #[test]

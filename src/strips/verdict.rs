@@ -80,10 +80,12 @@ impl Verdict {
         }
         let mut parts = Vec::new();
         if !self.strips_missing_theta.is_empty() {
-            parts.push(format!("{} miss θ by more than {}°", strip_list(&self.strips_missing_theta), self.tolerance_degrees));
+            let verb = if self.strips_missing_theta.len() == 1 { "misses" } else { "miss" };
+            parts.push(format!("{} {verb} θ by more than {}°", strip_list(&self.strips_missing_theta), self.tolerance_degrees));
         }
         if !self.strips_with_flipped_quads.is_empty() {
-            parts.push(format!("{} have flipped quads", strip_list(&self.strips_with_flipped_quads)));
+            let verb = if self.strips_with_flipped_quads.len() == 1 { "has" } else { "have" };
+            parts.push(format!("{} {verb} flipped quads", strip_list(&self.strips_with_flipped_quads)));
         }
         format!(
             "no acceptable family: {}; {worst}; try a varying angle, another θ, or another start (guides from another side or angle, strokes)",

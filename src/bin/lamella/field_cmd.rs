@@ -106,6 +106,7 @@ pub fn run(args: &FieldArgs) -> CliResult<()> {
         strips: None,
         start: Some(&args.start),
     })?;
+    let out = OutputDir::create(&settings.out, settings.force)?;
     let mut start_description = None;
     let (mut solver, mut history, source, mesh) = match &args.resume {
         Some(path) => {
@@ -126,7 +127,6 @@ pub fn run(args: &FieldArgs) -> CliResult<()> {
             (started.solver, history, mesh_name(settings.mesh.as_deref()), mesh)
         }
     };
-    let out = OutputDir::create(&settings.out, settings.force)?;
     let theta = solver.params().family.theta_degrees();
     note(verbosity, &format!("field on {source}: θ = {theta}°, from iteration {}", solver.iterations()));
     let field_started = Instant::now();
