@@ -48,7 +48,8 @@ done
 
 echo "== C#: tests"
 "${mcs[@]}" -pkg:nunit -r:"$build/Lamella.dll" -out:"$build/Lamella.Tests.dll" -recurse:'csharp/Lamella.Tests/*.cs'
-cp "$target/debug/liblamella.so" "$build/"
+# The binding imports "lamella_native" (cargo's liblamella.so under the packaged name).
+cp "$target/debug/liblamella.so" "$build/liblamella_native.so"
 rm -f "$build/TestResult.xml"
 status=0
 # The panic test makes the library print a panic message on stderr; that is expected.
