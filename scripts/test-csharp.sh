@@ -72,6 +72,26 @@ echo "== C#: tests"
 "${mcs[@]}" -pkg:nunit -r:"$build/Lamella.dll" -out:"$build/Lamella.Tests.dll" -recurse:'csharp/Lamella.Tests/*.cs'
 # The binding imports "lamella_native" (cargo's liblamella.so under the packaged name).
 cp "$target/debug/liblamella.so" "$build/liblamella_native.so"
+
+echo "== C#: Yak package layout (csharp/package-yak.sh on stand-in build folders)"
+yak="$build/yak-layout"
+rm -rf "$yak"
+for framework in net48 net7.0; do
+    mkdir -p "$yak/bin/$framework"
+    cp "$build/Lamella.Grasshopper.gha" "$build/Lamella.dll" csharp/Lamella.Grasshopper/manifest.yml "$yak/bin/$framework/"
+    cp "$build/liblamella_native.so" "$yak/bin/$framework/lamella_native.dll"
+done
+csharp/package-yak.sh win "$yak/bin" "$yak/dist" >/dev/null
+for file in rh7-win/manifest.yml rh7-win/icon.png rh7-win/Lamella.Grasshopper.gha rh7-win/Lamella.dll rh7-win/lamella_native.dll \
+    rh8-win/manifest.yml rh8-win/icon.png rh8-win/net48/Lamella.Grasshopper.gha rh8-win/net7.0/Lamella.dll rh8-win/net7.0/lamella_native.dll; do
+    [ -f "$yak/dist/$file" ] || { echo "package-yak.sh did not stage $file"; exit 1; }
+done
+[ -z "$(find "$yak/dist" -mindepth 3 -name manifest.yml)" ] || { echo "package-yak.sh left a manifest below a package's top"; exit 1; }
+if csharp/package-yak.sh mac "$yak/bin" "$yak/dist-mac" >/dev/null 2>&1; then
+    echo "package-yak.sh staged a macOS package without liblamella_native.dylib"
+    exit 1
+fi
+
 rm -f "$build/TestResult.xml"
 status=0
 # The panic test makes the library print a panic message on stderr; that is expected.

@@ -62,7 +62,8 @@ namespace Lamella.Grasshopper
             {
                 width = StripDefaults.Width(curves.Curves.Points());
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, string.Format(CultureInfo.InvariantCulture,
-                    "Width not set: {0:G6} document units (about {1:0.#} % of the curves' extent)", width, 100 * StripDefaults.WidthFraction));
+                    "Width not set: {0:G6} ({1}; about {2:0.#} % of the curves' extent), gap {3:G6}", width,
+                    RhinoConversion.DocumentUnits() ?? "document units", 100 * StripDefaults.WidthFraction, gapGiven ? gap : StripDefaults.Gap(width)));
             }
             if (!gapGiven) gap = StripDefaults.Gap(width);
             if (!(gap >= 0) || double.IsInfinity(gap))

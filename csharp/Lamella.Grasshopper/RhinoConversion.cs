@@ -128,6 +128,20 @@ namespace Lamella.Grasshopper
             return lines;
         }
 
+        /// <summary>The active Rhino document's model unit (e.g. "Meters"), or null without one (Rhino.Compute, Hops).</summary>
+        public static string DocumentUnits()
+        {
+            try
+            {
+                Rhino.RhinoDoc document = Rhino.RhinoDoc.ActiveDoc;
+                return document == null ? null : document.ModelUnitSystem.ToString();
+            }
+            catch (Exception)
+            {
+                return null;
+            }
+        }
+
         /// <summary>Points given on the XY plane (x, y, z each) placed on <paramref name="plane"/> (see <see cref="StripArrays.OnPlane"/>).</summary>
         public static double[] OnPlane(double[] xyz, Plane plane)
         {

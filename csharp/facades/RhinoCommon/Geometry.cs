@@ -5,6 +5,19 @@ using System.Collections.Generic;
 using System.Drawing;
 using Rhino.Geometry.Collections;
 
+namespace Rhino
+{
+    public class RhinoDoc
+    {
+        internal RhinoDoc() { throw new NotSupportedException("facade"); }
+        public static RhinoDoc ActiveDoc { get { throw new NotSupportedException("facade"); } }
+        public UnitSystem ModelUnitSystem { get { throw new NotSupportedException("facade"); } }
+    }
+
+    // A few of the real values, with their real numbers (the plugin only prints the value it gets).
+    public enum UnitSystem : byte { None = 0, Millimeters = 2, Meters = 4 }
+}
+
 namespace Rhino.Geometry
 {
     public struct Point3d
