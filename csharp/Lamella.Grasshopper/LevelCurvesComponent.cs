@@ -20,7 +20,7 @@ namespace Lamella.Grasshopper
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
-            pManager.AddGenericParameter("Field", "F", "A field from Strip Field.", GH_ParamAccess.item);
+            LamellaParam<FieldGoo>.AddTo(pManager, new FieldParam(), "A field from Strip Field.");
             pManager.AddIntegerParameter("Count", "N", "Number of levels spread uniformly over the field's range, its extremes left out (a count). Ignored when Values are given. Default 10.", GH_ParamAccess.item, 10);
             pManager.AddNumberParameter("Values", "V", "Optional level values (field units), each inside the field's range; they replace Count.", GH_ParamAccess.list);
             pManager[2].Optional = true;
@@ -29,7 +29,7 @@ namespace Lamella.Grasshopper
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddGenericParameter("Curves", "C", "The level curves for Rectifying Strips.", GH_ParamAccess.item);
+            LamellaParam<CurvesGoo>.AddTo(pManager, new CurvesParam(), "The level curves for Rectifying Strips.");
             pManager.AddCurveParameter("Polylines", "P", "The level polylines (a level may give several pieces); closed levels are closed polylines.", GH_ParamAccess.list);
             pManager.AddNumberParameter("Levels", "L", "The level value of each polyline (field units).", GH_ParamAccess.list);
         }

@@ -27,7 +27,7 @@ namespace Lamella.Grasshopper
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
-            pManager.AddGenericParameter("Curves", "C", "Level curves from Level Curves (they carry the field's θ).", GH_ParamAccess.item);
+            LamellaParam<CurvesGoo>.AddTo(pManager, new CurvesParam(), "Level curves from Level Curves (they carry the field's θ).");
             pManager.AddNumberParameter("Width", "W", "Width of each flat strip, in document units, > 0. Default: a round number near 2 % of the curves' extent (named in a remark).", GH_ParamAccess.item);
             pManager[1].Optional = true;
             pManager.AddNumberParameter("Gap", "G", "Distance between the unrolled strips of the flat layout, in document units, ≥ 0. Default: half the width.", GH_ParamAccess.item);
@@ -37,7 +37,7 @@ namespace Lamella.Grasshopper
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddGenericParameter("Strips", "S", "The strips for Strip Quality.", GH_ParamAccess.item);
+            LamellaParam<StripsGoo>.AddTo(pManager, new StripsParam(), "The strips for Strip Quality.");
             pManager.AddMeshParameter("Strip Meshes", "M", "One planar-quad mesh per strip, in space.", GH_ParamAccess.list);
             pManager.AddLineParameter("Rulings", "R", "The rulings across the strips, boundary to boundary.", GH_ParamAccess.list);
             pManager.AddCurveParameter("Outlines", "O", "Each strip's boundary in space as a closed polyline (for detailing nodes and connections).", GH_ParamAccess.list);

@@ -32,6 +32,8 @@ namespace Lamella.Grasshopper
         private readonly LiveSolve live = new LiveSolve(FieldStepping.StopwatchClock());
         private int runningAtStart, converged;
         private bool stepping;
+        /// <summary>Whether the running iteration holds a session (an error after that keeps it: it is already an output).</summary>
+        private bool hasField;
         private string lastMessage;
 
         public StripFieldComponent()
@@ -49,7 +51,7 @@ namespace Lamella.Grasshopper
             pManager.AddMeshParameter("Mesh", "M", MeshDescription, GH_ParamAccess.item);
             pManager.AddNumberParameter("Theta", "θ", "Target angle between the curves' binormals and the surface normal, in degrees, 0–180 (90: geodesics, 0: asymptotic curves). Replaced by the estimate from Strokes when they are connected. Default 60.", GH_ParamAccess.item, 60.0);
             pManager.AddVectorParameter("Direction", "D", "Without Guides or Strokes, the start field is the height along this vector (unitless direction); its level curves should roughly follow the wanted strips. Default Z.", GH_ParamAccess.item, new Vector3d(0, 0, 1));
-            pManager.AddGenericParameter("Guides", "G", "Optional guides from Trace P-Curve, traced on this mesh, ordered and not crossing: the start field interpolates them (guide i on the level F = i, paper Eq. 5–7) and, when Spacing is 0, their spacing sets the gradient target. Default: none.", GH_ParamAccess.item);
+            LamellaParam<GuidesGoo>.AddTo(pManager, new GuidesParam(), "Optional guides from Trace P-Curve, traced on this mesh, ordered and not crossing: the start field interpolates them (guide i on the level F = i, paper Eq. 5–7) and, when Spacing is 0, their spacing sets the gradient target. Default: none.");
             pManager[3].Optional = true;
             pManager.AddCurveParameter("Strokes", "St", "Optional curves sketched on (or near, within a mesh edge of) the surface along the wanted strips, at least two, not crossing, in the order the family should run: the start field follows them and the θ they suggest replaces the θ input (shown in the message and the θ output). Not together with Guides. Default: none.", GH_ParamAccess.list);
             pManager[4].Optional = true;
@@ -64,7 +66,7 @@ namespace Lamella.Grasshopper
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddGenericParameter("Field", "F", "The field (a shared native solver session) for Level Curves.", GH_ParamAccess.item);
+            LamellaParam<FieldGoo>.AddTo(pManager, new FieldParam(), "The field (a shared native solver session) for Level Curves.");
             pManager.AddNumberParameter("Values", "V", "The field value at each vertex of the input mesh (field units: about 1 per Spacing; NaN at vertices no face uses).", GH_ParamAccess.list);
             pManager.AddTextParameter("Report", "R", "Iterations, stage, energies (paper Eq. 6, 8, 11), angle errors, singular vertices.", GH_ParamAccess.item);
             pManager.AddNumberParameter("Angle Error", "E", "Maximum |θ_measured − θ| over the measured vertices, in degrees.", GH_ParamAccess.item);
@@ -97,24 +99,24 @@ namespace Lamella.Grasshopper
 
         protected override void Solve(IGH_DataAccess DA)
         {
-            bool solved = false;
+            hasField = false;
             try
             {
-                solved = SolveField(DA);
+                SolveField(DA);
             }
             finally
             {
-                // An iteration without a field (missing or bad inputs, an error) releases the one it held.
-                if (!solved) sessions.Skip(DA.Iteration);
+                // An iteration without a field (missing or bad inputs, a failed start) releases the one it held.
+                if (!hasField) sessions.Skip(DA.Iteration);
             }
         }
 
-        /// <summary>One iteration: false when it produced no field.</summary>
-        private bool SolveField(IGH_DataAccess DA)
+        /// <summary>One iteration; sets <see cref="hasField"/> once it holds its field's session.</summary>
+        private void SolveField(IGH_DataAccess DA)
         {
             int iteration = DA.Iteration;
             Mesh mesh = null;
-            if (!DA.GetData(0, ref mesh) || mesh == null) return false;
+            if (!DA.GetData(0, ref mesh) || mesh == null) return;
             double thetaDegrees = 60, spacing = 0;
             Vector3d direction = new Vector3d(0, 0, 1);
             GuidesData guides;
@@ -124,7 +126,7 @@ namespace Lamella.Grasshopper
             var weights = new List<double>();
             DA.GetData(1, ref thetaDegrees);
             DA.GetData(2, ref direction);
-            if (!TryGooValue<GuidesGoo, GuidesData>(DA, 3, "Lamella guides", out guides)) return false;
+            if (!TryGooValue<GuidesGoo, GuidesData>(DA, 3, "Lamella guides", out guides)) return;
             DA.GetDataList(4, strokeCurves);
             DA.GetData(5, ref spacing);
             DA.GetDataList(6, weights);
@@ -136,7 +138,7 @@ namespace Lamella.Grasshopper
             if (problem != null)
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Error, problem);
-                return false;
+                return;
             }
 
             CleanMesh clean = CleanMeshInput(mesh);
@@ -150,6 +152,7 @@ namespace Lamella.Grasshopper
             string signature = Signature.Of(clean.Xyz, clean.Triangles, Fingerprint(thetaDegrees, direction, spacing, weights, guides, strokes));
             FieldSession session = sessions.Session(iteration, clean.Xyz, clean.Triangles, signature, reset,
                 native => Start(native, clean, signature, thetaDegrees, direction, spacing, weights, guides, strokes));
+            hasField = true;
             if (guides != null && strokes == null && guides.ThetaDegrees != session.ThetaDegrees)
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, string.Format(CultureInfo.InvariantCulture,
@@ -192,7 +195,6 @@ namespace Lamella.Grasshopper
             foreach (int v in solver.SingularVertices()) singular.Add(RhinoConversion.Point(clean.Xyz, v));
             DA.SetDataList(7, singular);
             DA.SetDataList(8, RhinoConversion.Vectors(clean.ToInputVertices(solver.Binormals(), 3, 0)));
-            return true;
         }
 
         /// <summary>

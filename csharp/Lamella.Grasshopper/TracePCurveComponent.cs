@@ -32,7 +32,7 @@ namespace Lamella.Grasshopper
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddGenericParameter("Guides", "G", "The traced curves as guides for Strip Field (a shared native object).", GH_ParamAccess.item);
+            LamellaParam<GuidesGoo>.AddTo(pManager, new GuidesParam(), "The traced curves as guides for Strip Field (a shared native object).");
             pManager.AddCurveParameter("Polylines", "C", "The traced polylines, one per start point; their points lie on mesh edges.", GH_ParamAccess.list);
             pManager.AddTextParameter("Stops", "S", "Why each curve ended: boundary (the normal end), no candidate (no next point realises θ), length limit or point limit.", GH_ParamAccess.list);
             pManager.AddNumberParameter("Lengths", "L", "The length of each curve, in document units.", GH_ParamAccess.list);

@@ -35,12 +35,6 @@ namespace Lamella.Tests
             };
         }
 
-        private static Func<double> TickingClock(double step)
-        {
-            double now = 0;
-            return () => now += step;
-        }
-
         /// <summary>
         /// The case that never converged before: two meshes in one component, stepped live (one or two iterations per
         /// solution). Each keeps its own session across solutions, so both converge, each started exactly once.
@@ -63,7 +57,7 @@ namespace Lamella.Tests
                         FieldSession session = sessions.Session(i, inputs[i].Xyz, inputs[i].Triangles, SignatureOf(inputs[i], 60), false, Starter(inputs[i], 60, log));
                         if (initial[i] == null) initial[i] = session;
                         Assert.AreSame(initial[i], session, "item " + i + " keeps its session");
-                        session.StepWithin(100, 1000, () => false, TickingClock(40));
+                        session.StepWithin(100, 1000, () => false, FieldSteppingTests.TickingClock(40));
                     }
                     sessions.EndSolution();
                     if (sessions.RunningCount() == 0) break;
@@ -172,7 +166,7 @@ namespace Lamella.Tests
                     Assert.AreEqual(curvePoints.Length, points.Length);
                     Assert.Less(points.Zip(curvePoints, (p, q) => Math.Abs(p - q)).Max(), 1e-9, "the same level curves");
                 }
-                SteppingOutcome outcome = field.StepWithin(100, 1000, () => false, TickingClock(1));
+                SteppingOutcome outcome = field.StepWithin(100, 1000, () => false, FieldSteppingTests.TickingClock(1));
                 Assert.AreEqual(SteppingStop.Converged, outcome.Stop, "converged before saving: not solved again");
                 Assert.AreEqual(0, outcome.Iterations);
             }

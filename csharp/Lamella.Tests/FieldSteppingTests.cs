@@ -22,7 +22,7 @@ namespace Lamella.Tests
         }
 
         /// <summary>A clock that advances by <paramref name="step"/> ms each time it is read (a fixed cost per iteration).</summary>
-        private static Func<double> TickingClock(double step)
+        internal static Func<double> TickingClock(double step)
         {
             double now = 0;
             return () => now += step;

@@ -83,6 +83,8 @@ namespace Grasshopper.Kernel
     public abstract class GH_InstanceDescription
     {
         internal GH_InstanceDescription() { throw new NotSupportedException("facade"); }
+        public string Name { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        public string NickName { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
         public virtual bool Write(GH_IWriter writer) { throw new NotSupportedException("facade"); }
         public virtual bool Read(GH_IReader reader) { throw new NotSupportedException("facade"); }
     }
@@ -109,6 +111,13 @@ namespace Grasshopper.Kernel
         public override void ExpireSolution(bool recompute) { throw new NotSupportedException("facade"); }
         public override bool Write(GH_IWriter writer) { throw new NotSupportedException("facade"); }
         public override bool Read(GH_IReader reader) { throw new NotSupportedException("facade"); }
+    }
+
+    public abstract class GH_Param<T> : GH_ActiveObject, IGH_Param where T : class, Grasshopper.Kernel.Types.IGH_Goo
+    {
+        protected GH_Param(string name, string nickname, string description, string category, string subcategory, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
+        public bool Optional { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        protected virtual T InstantiateT() { throw new NotSupportedException("facade"); }
     }
 
     public abstract class GH_Component : GH_ActiveObject
@@ -143,6 +152,7 @@ namespace Grasshopper.Kernel
             public int AddCurveParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddGenericParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddPlaneParameter(string name, string nickname, string description, GH_ParamAccess access, Rhino.Geometry.Plane @default) { throw new NotSupportedException("facade"); }
+            public int AddParameter(IGH_Param param, string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
         }
 
         public class GH_OutputParamManager
@@ -157,6 +167,7 @@ namespace Grasshopper.Kernel
             public int AddTextParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddGenericParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddVectorParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
+            public int AddParameter(IGH_Param param, string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
         }
     }
 }
