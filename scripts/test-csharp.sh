@@ -68,11 +68,8 @@ if [ -z "$manifest_version" ] || [ "$manifest_version" != "$plugin_version" ]; t
     exit 1
 fi
 
-echo "== C#: tests"
-"${mcs[@]}" -pkg:nunit -r:"$build/Lamella.dll" -out:"$build/Lamella.Tests.dll" -recurse:'csharp/Lamella.Tests/*.cs'
 # The binding imports "lamella_native" (cargo's liblamella.so under the packaged name).
 cp "$target/debug/liblamella.so" "$build/liblamella_native.so"
-
 echo "== C#: Yak package layout (csharp/package-yak.sh on stand-in build folders)"
 yak="$build/yak-layout"
 rm -rf "$yak"
@@ -91,6 +88,9 @@ if csharp/package-yak.sh mac "$yak/bin" "$yak/dist-mac" >/dev/null 2>&1; then
     echo "package-yak.sh staged a macOS package without liblamella_native.dylib"
     exit 1
 fi
+
+echo "== C#: tests"
+"${mcs[@]}" -pkg:nunit -r:"$build/Lamella.dll" -out:"$build/Lamella.Tests.dll" -recurse:'csharp/Lamella.Tests/*.cs'
 
 rm -f "$build/TestResult.xml"
 status=0

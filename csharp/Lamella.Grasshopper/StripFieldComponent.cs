@@ -160,6 +160,8 @@ namespace Lamella.Grasshopper
             }
 
             if (!run) live.RunSwitchedOff();
+            // Grasshopper reports any Escape since it was last asked: forget one pressed before Run was switched on.
+            else if (live.RunSwitchedOn()) GH_Document.IsEscapeKeyDown();
             FieldReport report = Advance(session, run, solveNow, maxIterations);
             if (report.IsConverged) converged++;
             lastMessage = (strokes != null ? string.Format(CultureInfo.InvariantCulture, "θ ≈ {0:0.#}° from strokes · ", session.ThetaDegrees) : "") +

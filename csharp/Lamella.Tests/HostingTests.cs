@@ -85,10 +85,13 @@ namespace Lamella.Tests
             Assert.AreEqual(10, live.NextDelayMs(), "at least the shortest delay");
             Assert.AreEqual(20, live.BudgetPerSession(4), 1e-12, "running sessions share the budget");
             Assert.AreEqual(80, live.BudgetPerSession(0), 1e-12);
+            Assert.IsTrue(live.RunSwitchedOn(), "Run goes on");
+            Assert.IsFalse(live.RunSwitchedOn(), "and stays on");
             live.Cancel();
             Assert.IsTrue(live.Cancelled);
             live.RunSwitchedOff();
             Assert.IsFalse(live.Cancelled);
+            Assert.IsTrue(live.RunSwitchedOn(), "on again after off");
             Assert.Throws<ArgumentOutOfRangeException>(() => new LiveSolve(() => 0, 0));
         }
 

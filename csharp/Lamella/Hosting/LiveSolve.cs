@@ -22,6 +22,7 @@ namespace Lamella.Hosting
         private readonly double minDelayMs, maxDelayMs;
         private double lastStart = double.NaN, lastDelay;
         private double busyMs = double.NaN;
+        private bool running;
 
         /// <summary>A pace with the given solver budget and delay bounds, timed by <paramref name="clockMs"/>.</summary>
         public LiveSolve(Func<double> clockMs, double budgetMs = DefaultBudgetMs, double minDelayMs = DefaultMinDelayMs, double maxDelayMs = DefaultMaxDelayMs)
@@ -70,6 +71,21 @@ namespace Lamella.Hosting
         public void Cancel() => Cancelled = true;
 
         /// <summary>Run is off: a later Run starts stepping again.</summary>
-        public void RunSwitchedOff() => Cancelled = false;
+        public void RunSwitchedOff()
+        {
+            Cancelled = false;
+            running = false;
+        }
+
+        /// <summary>
+        /// Run is on: true the first time after it was off (or ever), when a host should forget an Escape pressed before
+        /// (Grasshopper's escape check reports any press since it was last asked).
+        /// </summary>
+        public bool RunSwitchedOn()
+        {
+            bool starting = !running;
+            running = true;
+            return starting;
+        }
     }
 }
