@@ -24,7 +24,7 @@ mod target_angle;
 pub use auto_design::{auto_design, AutoDesign, AutoDesignOptions, DesignStatus};
 pub use error::InitialisationError;
 pub use guide_curves::{field_from_guide_curves, GuideCurveOptions, GuideField};
-pub use start_search::{Candidate, SearchError, SearchOptions, StartKind, StartSearch};
+pub use start_search::{search_start, Candidate, SearchError, SearchOptions, SearchOutcome, StartKind, StartSearch};
 pub use stroke_field::{field_from_strokes, StrokeField, StrokeOptions};
 pub use strokes::{project_strokes, StrokeSample};
 pub use target_angle::estimate_target_angle;

@@ -135,8 +135,9 @@ struct Pending {
 impl StartSearch {
     /// Prepares the search for a field of `params` (its family, weights and schedule; its
     /// gradient target is replaced by each candidate's) on `mesh`.
-    pub fn new(mesh: &TriMesh, params: FieldParams, options: SearchOptions) -> Result<StartSearch, FieldError> {
+    pub fn new(mesh: &TriMesh, mut params: FieldParams, options: SearchOptions) -> Result<StartSearch, FieldError> {
         validate(&options)?;
+        params.family = params.family.by_name();
         let mut search = StartSearch {
             mesh: mesh.clone(),
             params,
@@ -325,6 +326,26 @@ impl StartSearch {
         let singular_fraction = singular as f64 / self.mesh.vertex_count() as f64;
         Ok(measure.rms_error_degrees + 0.25 * measure.max_error_degrees + STRAIGHT_PENALTY * straight + SINGULAR_PENALTY * singular_fraction)
     }
+}
+
+/// What [`search_start`] found: the solver to continue, every candidate and the winner.
+pub struct SearchOutcome {
+    /// Restarted from the winner's short solve with the final weights: step it to convergence.
+    pub solver: FieldSolver,
+    pub candidates: Vec<Candidate>,
+    /// Index into `candidates`.
+    pub winner: usize,
+}
+
+/// Runs the whole search for a field of `params` on `mesh` (see [`StartSearch`]).
+pub fn search_start(mesh: &TriMesh, params: FieldParams, options: SearchOptions) -> Result<SearchOutcome, SearchError> {
+    let mut search = StartSearch::new(mesh, params, options).map_err(SearchError::Field)?;
+    search.run().map_err(SearchError::Field)?;
+    let candidates = search.candidates().to_vec();
+    let winner = search.winner();
+    let solver = search.into_solver()?;
+    // Invariant: into_solver succeeds only with a winner.
+    Ok(SearchOutcome { solver, candidates, winner: winner.unwrap_or(0) })
 }
 
 /// Above this fraction of nearly straight measured points a pseudo-geodesic family is degenerate.
