@@ -21,7 +21,8 @@
 //! degrees, along the curves), plus penalties for nearly straight pieces and singular vertices;
 //! lower is better. A candidate is rejected when more than half of its measured curve is nearly
 //! straight (a degenerate pseudo-geodesic family), when its level curves cannot be measured, or
-//! when its short solve fails.
+//! when its short solve fails; a start whose level curves are straight lines to begin with (90 %
+//! or more) is rejected without a solve.
 
 use std::collections::VecDeque;
 
@@ -170,7 +171,8 @@ impl StartSearch {
             singular_vertices: 0,
             rejected: None,
         };
-        match next.field {
+        let field = next.field.and_then(|field| self.reject_straight_start(&field).map_or(Ok(field), Err));
+        match field {
             Err(reason) => candidate.rejected = Some(reason),
             Ok(field) => match self.probe(&field, next.gradient_target)? {
                 Err(reason) => candidate.rejected = Some(reason),
@@ -296,20 +298,29 @@ impl StartSearch {
             Err(error) => return Ok(Err(format!("short solve failed: {error}"))),
         };
         let probed = solver.field();
-        let levels = match uniform_levels(&self.mesh, &probed, self.options.levels) {
-            Ok(levels) => levels,
-            Err(error) => return Ok(Err(format!("no level curves: {error}"))),
-        };
-        let curves = match extract_level_curves(&self.mesh, &probed, &levels) {
-            Ok(curves) => curves,
-            Err(error) => return Ok(Err(format!("no level curves: {error}"))),
-        };
+        Ok(self.measure(&probed).map(|measure| (measure, report.singular_vertices.len(), probed)))
+    }
+
+    /// A pseudo-geodesic start whose level curves are already nearly all straight (the rulings of
+    /// a developable surface, say) stays on them: every P-curve condition holds there in the
+    /// limit, so no solve moves it. Rejected without a solve; `None` otherwise.
+    fn reject_straight_start(&self, field: &[f64]) -> Option<String> {
+        if !self.is_pseudo_geodesic() {
+            return None;
+        }
+        let measure = self.measure(field).ok()?;
+        (measure.measured + measure.straight > 0 && measure.straight_fraction() > STRAIGHT_START_FRACTION).then(|| {
+            format!("degenerate: {:.0} % of its level curves are straight lines from the start", 100.0 * measure.straight_fraction())
+        })
+    }
+
+    /// The family measure of `field`'s level curves.
+    fn measure(&self, field: &[f64]) -> Result<FamilyAngles, String> {
+        let levels = uniform_levels(&self.mesh, field, self.options.levels).map_err(|e| format!("no level curves: {e}"))?;
+        let curves = extract_level_curves(&self.mesh, field, &levels).map_err(|e| format!("no level curves: {e}"))?;
         let (low, high) = self.mesh.bounding_box();
         let spacing = self.options.spacing_edges * self.mesh.mean_edge_length();
-        match family_angles(&curves, self.params.family, spacing, (high - low).norm()) {
-            Ok(measure) => Ok(Ok((measure, report.singular_vertices.len(), probed))),
-            Err(error) => Ok(Err(format!("level curves not measurable: {error}"))),
-        }
+        family_angles(&curves, self.params.family, spacing, (high - low).norm()).map_err(|e| format!("level curves not measurable: {e}"))
     }
 
     fn score(&self, measure: &FamilyAngles, singular: usize) -> Result<f64, String> {
@@ -348,6 +359,8 @@ pub fn search_start(mesh: &TriMesh, params: FieldParams, options: SearchOptions)
     Ok(SearchOutcome { solver, candidates, winner: winner.unwrap_or(0) })
 }
 
+/// Above this fraction of straight level-curve points a pseudo-geodesic start is rejected unsolved.
+const STRAIGHT_START_FRACTION: f64 = 0.9;
 /// Above this fraction of nearly straight measured points a pseudo-geodesic family is degenerate.
 const MAX_STRAIGHT_FRACTION: f64 = 0.5;
 /// Score added per unit fraction of nearly straight points (degrees).
