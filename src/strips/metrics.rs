@@ -10,7 +10,9 @@ use serde::{Deserialize, Serialize};
 pub struct StripMetrics {
     /// Max over inner vertices of `|θ_measured − θ|` in degrees, with `θ_measured` the signed angle
     /// `acos(sign(b·u) (b·n))` between the discrete binormal of the final polyline (Eq. 1) and the
-    /// surface normal at the closest surface point (`u = n × t`, `t` the outer bisector).
+    /// surface normal at the closest surface point (`u = n × t`, `t` the outer bisector); vertices
+    /// where the polyline is straight (its circle through the neighbours larger than the surface's
+    /// bounding-box diagonal) have no binormal and are left out.
     pub max_diff_theta_degrees: f64,
     /// Max distance of the unrolled centre points from their principal line, over the strip length.
     pub e_straight: f64,
@@ -102,6 +104,13 @@ impl StripMetrics {
         };
         for (i, b) in binormals.iter().enumerate() {
             let Some(b) = b else { continue };
+            // Where the centre line is straight at the model's scale its binormal is noise: the
+            // quad-plane measure below covers such stretches.
+            let (incoming, outgoing) = (strip.centre[i] - strip.centre[i - 1], strip.centre[i + 1] - strip.centre[i]);
+            let lengths = incoming.norm() * outgoing.norm() * (incoming + outgoing).norm();
+            if incoming.cross(&outgoing).norm() * 2.0 * diagonal <= lengths {
+                continue;
+            }
             let n = strip.normals[i];
             let Some(u) = n.cross(&(edges[i - 1] + edges[i])).try_normalize(0.0) else { continue };
             let sign = if b.dot(&u) < 0.0 { -1.0 } else { 1.0 };
