@@ -171,7 +171,8 @@ fn field_fit(mesh: &TriMesh, quadric: &LocalQuadric, v: usize) -> FieldFit {
             }
         }
         let svd = design.clone().svd(true, true);
-        if !(svd.singular_values.min() > CONDITION * svd.singular_values.max()) {
+        let smallest = svd.singular_values.min();
+        if smallest.is_nan() || smallest <= CONDITION * svd.singular_values.max() {
             continue;
         }
         let Ok(inverse) = svd.pseudo_inverse(0.0) else { continue };
@@ -292,7 +293,7 @@ impl LevelJet {
         let [_, a, b, hxx, hxy, hyy] = stencil.fit(field);
         let r = (a * a + b * b).sqrt();
         // `spread / σ` is the size of the gradient the values could have at most.
-        if !(r > VANISHING_GRADIENT * spread / stencil.scale) || !r.is_finite() {
+        if !r.is_finite() || r <= VANISHING_GRADIENT * spread / stencil.scale {
             return None;
         }
         let q = stencil.quadric;

@@ -122,7 +122,8 @@ fn fit_in_frame(mesh: &TriMesh, v: usize, neighbourhood: &[u32], axis: &Vec3) ->
     }
     let svd = design.svd(true, true);
     let largest = svd.singular_values.max();
-    if !(svd.singular_values.min() > CONDITION * largest) {
+    let smallest = svd.singular_values.min();
+    if smallest.is_nan() || smallest <= CONDITION * largest {
         return None;
     }
     let c = svd.solve(&heights, 0.0).ok()?;

@@ -137,7 +137,7 @@ fn inner_angles(curve: &LevelCurve, model_size: f64) -> Vec<(Vec3, Option<f64>)>
             let (incoming, outgoing, chord) = (b - a, c - b, c - a);
             let cross = incoming.cross(&outgoing);
             let lengths = incoming.norm() * outgoing.norm() * chord.norm();
-            if !(lengths > 0.0) {
+            if lengths.is_nan() || lengths <= 0.0 {
                 return None;
             }
             // Circumradius |a||b||c| / (2 |a × b|).

@@ -10,11 +10,11 @@ use rayon::prelude::*;
 
 use super::error::{StripError, StripWarning};
 use super::frenet::{initial_rulings, unit_edges};
-use super::metrics::{PatternMetrics, StripGeometry, StripMetrics};
+use super::metrics::{PatternMetrics, StripMetrics, StripShape};
 use super::params::{StripParams, StripWeights};
 use super::problem::{binormal, position, ruling, vec3, StripProblem};
 use super::strip::{RectifyingStrip, SkippedCurve, StripPattern};
-use super::surface_distance::{SurfacePoint, SurfaceProjector};
+use super::surface_distance::SurfaceProjector;
 use super::unrolling::unroll;
 use super::verdict::Verdict;
 use crate::curves::LevelCurve;
@@ -282,20 +282,8 @@ impl<'a> StripOptimiser<'a> {
         let unrolling = unroll(&centre, &offsets);
         // A vertex that cannot be projected (never expected: LM keeps x finite) gets an infinite
         // distance, which `is_finite` turns into a skip rather than a wrong metric.
-        let unprojected = |p: &Vec3| SurfacePoint { point: *p, normal: Vec3::z(), distance: f64::INFINITY };
-        let surface: Vec<SurfacePoint> = centre.iter().map(|p| self.projector.project(p).unwrap_or_else(|| unprojected(p))).collect();
-        let normals: Vec<Vec3> = surface.iter().map(|s| s.normal).collect();
-        let distances: Vec<f64> = surface.iter().map(|s| s.distance).collect();
-        let geometry = StripGeometry {
-            centre: &centre,
-            rulings: &rulings,
-            normals: &normals,
-            distances: &distances,
-            unrolling: &unrolling,
-            offsets: &offsets,
-            width: params.width,
-        };
-        let metrics = StripMetrics::measure(&geometry, params.theta_degrees, diagonal);
+        let shape = StripShape { centre: &centre, rulings: &rulings, offsets: &offsets, unrolling: &unrolling, width: params.width };
+        let metrics = StripMetrics::on_surface(self.projector, &shape, params.theta_degrees, diagonal);
         if metrics.flipped_quads > 0 {
             warnings.push(StripWarning::FlippedQuads { count: metrics.flipped_quads });
         }

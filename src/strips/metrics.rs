@@ -1,6 +1,7 @@
 //! The quality measures of Table 4, per strip and over a whole pattern.
 use super::frenet::{discrete_binormals, unit_edges};
 use super::unrolling::{straightness, Unrolling};
+use super::surface_distance::{SurfacePoint, SurfaceProjector};
 use crate::field::Family;
 use crate::mesh::Vec3;
 use serde::{Deserialize, Serialize};
@@ -88,7 +89,37 @@ pub struct StripGeometry<'a> {
     pub width: f64,
 }
 
+/// A strip as its centre line, unit rulings, boundary offsets (centre to the boundary on the
+/// rulings' side) and flat unrolling, before it is placed against the surface.
+pub struct StripShape<'a> {
+    pub centre: &'a [Vec3],
+    pub rulings: &'a [Vec3],
+    pub offsets: &'a [Vec3],
+    pub unrolling: &'a Unrolling,
+    pub width: f64,
+}
+
 impl StripMetrics {
+    /// The measures of `shape` against the surface `projector` projects onto (normals and
+    /// distances at the centre points' closest points; a point that cannot be projected, i.e.
+    /// a non-finite one, counts as infinitely far).
+    pub fn on_surface(projector: &SurfaceProjector, shape: &StripShape, theta_degrees: f64, diagonal: f64) -> StripMetrics {
+        let unprojected = |p: &Vec3| SurfacePoint { point: *p, normal: Vec3::z(), distance: f64::INFINITY };
+        let surface: Vec<SurfacePoint> = shape.centre.iter().map(|p| projector.project(p).unwrap_or_else(|| unprojected(p))).collect();
+        let normals: Vec<Vec3> = surface.iter().map(|s| s.normal).collect();
+        let distances: Vec<f64> = surface.iter().map(|s| s.distance).collect();
+        let geometry = StripGeometry {
+            centre: shape.centre,
+            rulings: shape.rulings,
+            normals: &normals,
+            distances: &distances,
+            unrolling: shape.unrolling,
+            offsets: shape.offsets,
+            width: shape.width,
+        };
+        StripMetrics::measure(&geometry, theta_degrees, diagonal)
+    }
+
     /// The Table 4 measures of a strip lying at `strip`, for the family of target angle
     /// `theta_degrees` ([`Family::from_theta`]: at 0°, 90° and 180° the quad angle has no sign);
     /// `appro_percent` relates the distances to `diagonal` (the surface's bounding-box diagonal).

@@ -18,7 +18,7 @@ mod verdict;
 pub use builder::rectifying_strips;
 pub use error::{StripError, StripWarning};
 pub use frenet::{discrete_binormals, initial_rulings, principal_normals, unit_edges, version_one_rulings};
-pub use metrics::{PatternMetrics, StripGeometry, StripMetrics};
+pub use metrics::{PatternMetrics, StripGeometry, StripMetrics, StripShape};
 pub use params::{StripParams, StripWeights};
 pub use strip::{RectifyingStrip, SkippedCurve, StripPattern};
 pub use surface_distance::{SurfacePoint, SurfaceProjector};

@@ -25,7 +25,7 @@ impl Unrolling {
         let (Some(first), Some(last)) = (self.centre.first(), self.centre.last()) else { return 0.0 };
         let (dx, dy) = (last[0] - first[0], last[1] - first[1]);
         let length = dx.hypot(dy);
-        if !(length > 0.0) || self.left.is_empty() {
+        if length.is_nan() || length <= 0.0 || self.left.is_empty() {
             return 0.0;
         }
         let across = |p: &[f64; 2], q: &[f64; 2]| ((p[0] - q[0]) * -dy + (p[1] - q[1]) * dx).abs() / length;

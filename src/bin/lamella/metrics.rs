@@ -6,7 +6,7 @@ use crate::error::{CliError, CliResult};
 use crate::mesh_input::load_mesh;
 use crate::strip_obj::{read_strips_obj, StripShape};
 use lamella::mesh::{TriMesh, Vec3};
-use lamella::strips::{unroll, PatternMetrics, StripGeometry, StripMetrics, SurfaceProjector, Verdict, DEFAULT_TOLERANCE_DEGREES};
+use lamella::strips::{unroll, PatternMetrics, StripMetrics, SurfaceProjector, Verdict, DEFAULT_TOLERANCE_DEGREES};
 use serde_json::json;
 
 /// Table 4 of one stored strip (at least 2 rulings, as read).
@@ -18,25 +18,12 @@ fn measure(projector: &SurfaceProjector, shape: &StripShape, theta: f64, diagona
         .map(|d| d.try_normalize(0.0))
         .collect::<Option<_>>()
         .ok_or_else(|| CliError::bad_input(format!("{}: a ruling of zero length", shape.name)))?;
-    let surface: Vec<_> = centre
-        .iter()
-        .map(|c| projector.project(c))
-        .collect::<Option<_>>()
-        .ok_or_else(|| CliError::bad_input(format!("{}: a non-finite vertex", shape.name)))?;
-    let surface: Vec<lamella::strips::SurfacePoint> = surface;
-    let normals: Vec<Vec3> = surface.iter().map(|s| s.normal).collect();
-    let distances: Vec<f64> = surface.iter().map(|s| s.distance).collect();
+    if !centre.iter().all(|c| c.iter().all(|x| x.is_finite())) {
+        return Err(CliError::bad_input(format!("{}: a non-finite vertex", shape.name)));
+    }
     let unrolling = unroll(&centre, &offsets);
-    let geometry = StripGeometry {
-        centre: &centre,
-        rulings: &rulings,
-        normals: &normals,
-        distances: &distances,
-        unrolling: &unrolling,
-        offsets: &offsets,
-        width: unrolling.width(),
-    };
-    Ok(StripMetrics::measure(&geometry, theta, diagonal))
+    let strip = lamella::strips::StripShape { centre: &centre, rulings: &rulings, offsets: &offsets, unrolling: &unrolling, width: unrolling.width() };
+    Ok(StripMetrics::on_surface(projector, &strip, theta, diagonal))
 }
 
 fn diagonal(mesh: &TriMesh) -> f64 {
