@@ -26,9 +26,9 @@
 //! Both curvatures are consistent (first order on any triangulation, second order where the
 //! neighbourhood is symmetric), and a change of level spacing leaves them unchanged.
 
-use nalgebra::DMatrix;
 use rayon::prelude::*;
 
+use crate::mesh::small_fit::{normal_inverse, residual_basis};
 use crate::mesh::{vertex_neighbourhood, LocalQuadric, TriMesh, Vec3};
 
 /// Field-fit coefficients the jet uses, `(a, b, A, B, C)`.
@@ -163,48 +163,28 @@ fn field_fit(mesh: &TriMesh, quadric: &LocalQuadric, v: usize) -> FieldFit {
         if vertices.len() < UNKNOWNS + 2 {
             continue;
         }
-        let mut design = DMatrix::zeros(vertices.len(), UNKNOWNS);
-        for (row, &u) in vertices.iter().enumerate() {
-            let (x, y) = quadric.chart(&origin, &mesh.positions()[u as usize]);
-            for (column, value) in basis(x, y).into_iter().enumerate() {
-                design[(row, column)] = value;
-            }
-        }
-        let svd = design.clone().svd(true, true);
-        let smallest = svd.singular_values.min();
-        if smallest.is_nan() || smallest <= CONDITION * svd.singular_values.max() {
-            continue;
-        }
-        let Ok(inverse) = svd.pseudo_inverse(0.0) else { continue };
-        let weights: Vec<[f64; UNKNOWNS]> = (0..vertices.len()).map(|j| std::array::from_fn(|c| inverse[(c, j)])).collect();
-        let residual_operator = residual_operator(&design, &inverse);
-        if weights.iter().all(|w| w.iter().all(|x| x.is_finite())) && residual_operator.iter().all(|x| x.is_finite()) {
+        let design: Vec<[f64; UNKNOWNS]> = vertices
+            .iter()
+            .map(|&u| {
+                let (x, y) = quadric.chart(&origin, &mesh.positions()[u as usize]);
+                basis(x, y)
+            })
+            .collect();
+        let Some(inverse) = normal_inverse(&design, CONDITION) else { continue };
+        // The fit's coefficients are (DᵀD)⁻¹ Dᵀ F: column j of that operator weighs F_j.
+        let weights: Vec<[f64; UNKNOWNS]> = design
+            .iter()
+            .map(|row| {
+                let w = inverse * nalgebra::SVector::<f64, UNKNOWNS>::from_row_slice(row);
+                std::array::from_fn(|c| w[c])
+            })
+            .collect();
+        let residual_operator = residual_basis(&design, &inverse);
+        if !residual_operator.is_empty() && weights.iter().all(|w| w.iter().all(|x| x.is_finite())) && residual_operator.iter().all(|x| x.is_finite()) {
             return FieldFit { vertices, weights, residual_operator };
         }
     }
     FieldFit { vertices: Vec::new(), weights: Vec::new(), residual_operator: Vec::new() }
-}
-
-/// Rows `L` ((m − 6) × m, row-major) with `LᵀL = I − H`, `H = D D⁺` the hat matrix of the fit:
-/// the eigenvectors of the projector `I − H` for eigenvalue 1, ordered by their largest
-/// component's index and sign-normalised so the result is deterministic.
-fn residual_operator(design: &DMatrix<f64>, inverse: &DMatrix<f64>) -> Vec<f64> {
-    let m = design.nrows();
-    let projector = DMatrix::identity(m, m) - design * inverse;
-    let eigen = nalgebra::SymmetricEigen::new((&projector + projector.transpose()) * 0.5);
-    let mut rows: Vec<Vec<f64>> = (0..m)
-        .filter(|&k| eigen.eigenvalues[k] > 0.5)
-        .map(|k| {
-            let v = eigen.eigenvectors.column(k);
-            let sign = if v[v.iamax()] < 0.0 { -1.0 } else { 1.0 };
-            v.iter().map(|x| sign * x).collect()
-        })
-        .collect();
-    rows.sort_by(|a, b| {
-        let key = |r: &Vec<f64>| r.iter().enumerate().fold((0, 0.0f64), |best, (i, x)| if x.abs() > best.1 { (i, x.abs()) } else { best }).0;
-        key(a).cmp(&key(b)).then_with(|| b.iter().zip(a.iter()).map(|(x, y)| x.total_cmp(y)).find(|o| o.is_ne()).unwrap_or(std::cmp::Ordering::Equal))
-    });
-    rows.concat()
 }
 
 /// The star of an interior vertex `v` and its flaps (the third vertex of the triangle beyond each

@@ -10,9 +10,9 @@
 //! at the vertex, so curvatures measured in it at the origin are those of the surface.
 //! [`TriMesh::local_quadrics`] fits them once per mesh.
 
-use nalgebra::{DMatrix, DVector};
 use rayon::prelude::*;
 
+use super::small_fit::{normal_inverse, solve};
 use super::{TriMesh, Vec3};
 
 /// Fewest neighbourhood vertices for a fit (the height fit has five unknowns).
@@ -109,24 +109,16 @@ fn fit_in_frame(mesh: &TriMesh, v: usize, neighbourhood: &[u32], axis: &Vec3) ->
     let tangents = tangent_basis(axis);
     let origin = mesh.positions()[v];
     let scale = mesh.mean_edge_length();
-    let others: Vec<u32> = neighbourhood.iter().copied().filter(|&u| u as usize != v).collect();
-    let mut design = DMatrix::zeros(others.len(), 5);
-    let mut heights = DVector::zeros(others.len());
-    for (row, &u) in others.iter().enumerate() {
+    let mut design: Vec<[f64; 5]> = Vec::with_capacity(neighbourhood.len());
+    let mut heights = Vec::with_capacity(neighbourhood.len());
+    for &u in neighbourhood.iter().filter(|&&u| u as usize != v) {
         let d = (mesh.positions()[u as usize] - origin) / scale;
         let (x, y) = (d.dot(&tangents[0]), d.dot(&tangents[1]));
-        for (column, value) in [x, y, 0.5 * x * x, x * y, 0.5 * y * y].into_iter().enumerate() {
-            design[(row, column)] = value;
-        }
-        heights[row] = d.dot(axis);
+        design.push([x, y, 0.5 * x * x, x * y, 0.5 * y * y]);
+        heights.push(d.dot(axis));
     }
-    let svd = design.svd(true, true);
-    let largest = svd.singular_values.max();
-    let smallest = svd.singular_values.min();
-    if smallest.is_nan() || smallest <= CONDITION * largest {
-        return None;
-    }
-    let c = svd.solve(&heights, 0.0).ok()?;
+    let inverse = normal_inverse(&design, CONDITION)?;
+    let c = solve(&design, &heights, &inverse);
     if !c.iter().all(|x| x.is_finite()) {
         return None;
     }

@@ -13,6 +13,7 @@ mod local_quadric;
 mod normals;
 mod obj;
 mod scaling;
+pub(crate) mod small_fit;
 mod star;
 mod topology;
 mod triangle;
