@@ -2,6 +2,8 @@
 //! against their ranges.
 use crate::args::{ConfigArgs, FieldFlags, GuideSeedingFlags, MeshArgs, OutArgs, StartFlags, StripFlags};
 use crate::error::{CliError, CliResult};
+use crate::mesh_input::read_text;
+use lamella::input::{clip, clip_words};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
@@ -163,7 +165,7 @@ fn parse_guide_side(text: &str) -> CliResult<GuideSide> {
     }
     text.parse::<usize>()
         .map(GuideSide::Index)
-        .map_err(|_| CliError::bad_input(format!("parameter --guide-side = {text} is not a side number or 'longest'")))
+        .map_err(|_| CliError::bad_input(format!("parameter --guide-side = {} is not a side number or 'longest'", clip(text))))
 }
 
 /// θ must lie in [0°, 180°].
@@ -180,10 +182,9 @@ fn out_of_range(name: &str, value: impl std::fmt::Display, range: &str) -> CliEr
 }
 
 fn read_config(path: &Path) -> CliResult<ConfigFile> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::bad_input(format!("cannot read config {}: {e}", path.display())))?;
+    let text = read_text(path)?;
     toml::from_str(&text).map_err(|e| {
-        let message = e.message().replace('\n', " ");
+        let message = clip_words(e.message());
         match e.span() {
             Some(span) => {
                 let line = text.get(..span.start).map_or(1, |before| before.matches('\n').count() + 1);

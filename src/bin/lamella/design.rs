@@ -3,6 +3,7 @@
 //! report, into one output directory.
 use crate::args::DesignArgs;
 use crate::config::{Flags, Settings};
+use crate::console::err_line;
 use crate::error::{CliError, CliResult};
 use crate::field_cmd::{field_summary, new_solver, optimise, write_field_files};
 use crate::field_files::HistoryRow;
@@ -46,7 +47,7 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     let run = build_strips(&mesh, &solver.field(), theta, settings.strips, settings.width)?;
     let strips_seconds = strips_started.elapsed().as_secs_f64();
     if verbosity == Verbosity::Verbose {
-        warning_lines(&run).iter().for_each(|w| eprintln!("{w}"));
+        warning_lines(&run).iter().for_each(err_line);
     }
 
     let mut surface = Vec::new();
@@ -70,6 +71,5 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
             strips_summary(&run),
             started.elapsed().as_secs_f64()
         ),
-    );
-    Ok(())
+    )
 }
