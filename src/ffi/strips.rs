@@ -40,7 +40,8 @@ pub struct LmlStrips {
 /// optimisation) does not fail the call: it is listed by `lml_strips_skipped`.
 ///
 /// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer; width not finite or
-/// ≤ 0, θ outside [0, 180], a weight negative or not finite (the parameter is named)).
+/// ≤ 0, θ outside [0, 180], a weight negative or not finite, an iteration count above
+/// `LML_MAX_STRIP_ROUNDS` / `LML_MAX_STRIP_ITERATIONS` (the parameter is named)).
 #[no_mangle]
 pub unsafe extern "C" fn lml_strips_new(curves: *const LmlCurves, params: *const LmlStripParams, out: *mut *mut LmlStrips) -> LmlStatus {
     guarded(|| {

@@ -11,7 +11,9 @@
 //! 7. more than one connected component;
 //! 8. not a disk with holes (only checked once the faces are all valid and form a connected,
 //!    consistently oriented manifold, since boundary loops and χ are meaningless otherwise);
-//! 9. derived geometry out of the range of f64 (checked on the built mesh, so only when
+//! 9. folded edges: neighbouring faces whose normals are more than [`MAX_FOLD_DEGREES`] apart
+//!    (inverted or folded-over triangles; checked on the same oriented manifold);
+//! 10. derived geometry out of the range of f64 (checked on the built mesh, so only when
 //!    everything else passed).
 
 use super::error::MeshError;
@@ -143,10 +145,36 @@ fn run_checks(positions: &[Vec3], faces: &[[u32; 3]], findings: &mut Findings) -
     {
         findings.errors.push(error);
     }
+    if findings.stop() {
+        return None;
+    }
+    findings.errors.extend(folded_edges(positions, faces, &table));
     if !findings.errors.is_empty() {
         return None;
     }
     Some(ValidTopology { edges: table.edges(), boundary_edges, boundary_loops })
+}
+
+/// Largest angle between the normals of two faces sharing an edge, in degrees. Beyond it the
+/// surface folds back onto itself there (a fold of 180° is a triangle turned over onto its
+/// neighbour): the one-ring of a vertex is no longer a disk over its tangent plane, level curves
+/// double back, and the field's normal equations become singular. Creases of a designed surface
+/// stay far below it.
+pub const MAX_FOLD_DEGREES: f64 = 120.0;
+
+/// One [`MeshError::FoldedEdge`] per edge whose two faces' normals are more than
+/// [`MAX_FOLD_DEGREES`] apart (faces consistently oriented, corners finite, areas non-zero).
+fn folded_edges(positions: &[Vec3], faces: &[[u32; 3]], table: &EdgeTable) -> Vec<MeshError> {
+    let limit = MAX_FOLD_DEGREES.to_radians().cos();
+    table
+        .interior_edges()
+        .filter_map(|([a, b], face_a, face_b)| {
+            let (na, _) = Triangle::of(positions, &faces[face_a]).normal_and_area();
+            let (nb, _) = Triangle::of(positions, &faces[face_b]).normal_and_area();
+            let cosine = na.dot(&nb).clamp(-1.0, 1.0);
+            (cosine < limit).then(|| MeshError::FoldedEdge { a, b, face_a, face_b, angle_degrees: cosine.acos().to_degrees() })
+        })
+        .collect()
 }
 
 /// Index range and repetition checks; returns which faces have valid, distinct indices.
