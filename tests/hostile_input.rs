@@ -363,3 +363,65 @@ fn an_endless_input_file_is_refused_at_the_size_limit() {
     assert!(started.elapsed().as_secs_f64() < 30.0);
     assert_bad_input(&dir.0, &["info", "."], &["directory"]);
 }
+
+// 9. A sliver mesh is bad input naming the sliver (it made the initial field's systems singular).
+
+/// An 8 × 8 grid on a gentle dome with a vertex `eps` above the middle of a boundary edge, which
+/// splits that edge's triangle and leaves a sliver of area ≈ eps / 2 on the boundary (face 8).
+fn sliver_obj(eps: f64) -> String {
+    let n = 8;
+    let id = |i: usize, j: usize| i * (n + 1) + j;
+    let mut v: Vec<[f64; 3]> = Vec::new();
+    for i in 0..=n {
+        for j in 0..=n {
+            let (x, y) = (j as f64, i as f64);
+            v.push([x, y, 0.1 * ((x - 4.0).powi(2) + (y - 4.0).powi(2)) / 16.0]);
+        }
+    }
+    let mut f = Vec::new();
+    for i in 0..n {
+        for j in 0..n {
+            let (a, b, c, d) = (id(i, j), id(i, j + 1), id(i + 1, j + 1), id(i + 1, j));
+            if i == 0 && j == n / 2 {
+                let m = v.len();
+                v.push([(v[a][0] + v[b][0]) / 2.0, eps, (v[a][2] + v[b][2]) / 2.0]);
+                f.extend([[a, b, m], [a, m, c], [m, b, c], [a, c, d]]);
+            } else {
+                f.extend([[a, b, c], [a, c, d]]);
+            }
+        }
+    }
+    let vertices = v.iter().map(|p| format!("v {} {} {}\n", p[0], p[1], p[2]));
+    vertices.chain(f.iter().map(|t| format!("f {} {} {}\n", t[0] + 1, t[1] + 1, t[2] + 1))).collect()
+}
+
+#[test]
+fn a_sliver_mesh_is_bad_input_naming_the_sliver() {
+    let dir = Scratch::new("sliver");
+    std::fs::write(dir.path("sliver.obj"), sliver_obj(1e-11)).expect("write");
+    let error = TriMesh::parse_obj(&sliver_obj(1e-11)).err().expect("refused");
+    assert!(matches!(&error, MeshError::ObjLine { error, .. } if matches!(**error, MeshError::SliverFace { face: 8, .. })), "{error}");
+    assert_bad_input(&dir.0, &["design", "--mesh", "sliver.obj", "--guides", "3", "--out", "d", "--quiet"], &["sliver.obj", "face 8 is a sliver"]);
+    // A mild sliver (area ratio 2e-6) is valid and designs.
+    std::fs::write(dir.path("mild.obj"), sliver_obj(1e-6)).expect("write");
+    let output = lamella(&dir.0, &["design", "--mesh", "mild.obj", "--guides", "3", "--out", "d", "--max-iterations", "10", "--strips", "2", "--quiet"]);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+}
+
+// Found by the fuzzer (fuzz/regressions/session/): a session whose saved solver options ask for
+// 2^64 − 1 damped trials per iteration hung in its first step.
+
+#[test]
+fn a_session_asking_for_endless_damped_trials_is_corrupt_data() {
+    let bytes = std::fs::read(Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/regressions/session/lm-max-trials")).expect("reproducer");
+    match FieldSolver::from_bytes(&bytes) {
+        Err(FieldError::CorruptData { message }) => assert!(message.contains("lm.max_trials"), "{message}"),
+        Err(other) => panic!("expected corrupt data, got {other}"),
+        Ok(_) => panic!("accepted"),
+    }
+    let mut params = FieldParams::pseudo_geodesic(60.0);
+    params.lm.max_trials = usize::MAX;
+    let mesh = roof_mesh();
+    let error = FieldSolver::new(&mesh, &axis_field(&mesh), params).err().expect("refused");
+    assert!(matches!(error, FieldError::InvalidParameter { name: "lm.max_trials", .. }), "{error}");
+}

@@ -2,6 +2,8 @@
 //! the error so that a user can look at the mesh there.
 
 use super::problem::FieldProblem;
+#[cfg(test)]
+use super::FieldError;
 use crate::solver::LeastSquaresProblem;
 
 /// How many vertices a located failure names.
@@ -27,4 +29,25 @@ pub(crate) fn largest_residual_vertices(problem: &FieldProblem, x: &[f64], verte
     order.sort_by(|&a, &b| score[b as usize].total_cmp(&score[a as usize]).then(a.cmp(&b)));
     order.truncate(NAMED_VERTICES);
     order
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::field::{FieldParams, FieldSolver};
+    use crate::surfaces::hall_roof;
+
+    #[test]
+    fn a_spike_in_the_field_is_named() {
+        let mesh = hall_roof(200).into_mesh().expect("valid roof");
+        let mut field: Vec<f64> = mesh.positions().iter().map(|p| p.x).collect();
+        let spike = (0..mesh.vertex_count()).find(|&v| !mesh.is_boundary_vertex(v) && v > mesh.vertex_count() / 2).expect("interior vertex");
+        field[spike] += 30.0;
+        let solver = FieldSolver::new(&mesh, &field, FieldParams::pseudo_geodesic(60.0)).expect("solver");
+        let named = largest_residual_vertices(&solver.problem, &solver.x, mesh.vertex_count());
+        assert_eq!(named.len(), NAMED_VERTICES);
+        assert!(named.contains(&(spike as u32)), "{named:?} should name vertex {spike}");
+        let message = FieldError::SolverFailedNear { error: crate::solver::SolverError::FactorizationFailed { trials: 10 }, vertices: named }.to_string();
+        assert!(message.contains(&spike.to_string()) && message.contains("largest residuals"), "{message}");
+    }
 }

@@ -26,7 +26,7 @@ pub use error::MeshError;
 pub use star::VertexStar;
 pub use topology::BoundaryEdge;
 pub use trimesh::TriMesh;
-pub use validation::{diagnose, MAX_FOLD_DEGREES};
+pub use validation::{diagnose, MAX_FOLD_DEGREES, MIN_NEIGHBOUR_AREA_RATIO};
 
 /// A point or vector in 3-space.
 pub type Vec3 = nalgebra::Vector3<f64>;

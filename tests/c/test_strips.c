@@ -92,6 +92,21 @@ static void bad_inputs(const LmlCurves *curves)
     expect_refused(NULL, &params, "curves", __LINE__);
     expect_refused(curves, NULL, "params", __LINE__);
     CHECK_STATUS(lml_strips_new(curves, &params, NULL), LML_STATUS_INVALID_ARGUMENT);
+    /* Iteration counts are bounded: UINT32_MAX used to run for minutes. */
+    bad = params;
+    bad.binormal_rounds = UINT32_MAX;
+    expect_refused(curves, &bad, "binormal_rounds", __LINE__);
+    bad.binormal_rounds = LML_MAX_STRIP_ROUNDS + 1;
+    expect_refused(curves, &bad, "binormal_rounds", __LINE__);
+    bad = params;
+    bad.iterations_per_round = UINT32_MAX;
+    expect_refused(curves, &bad, "iterations_per_round", __LINE__);
+    bad = params;
+    bad.final_iterations = LML_MAX_STRIP_ITERATIONS + 1;
+    expect_refused(curves, &bad, "final_iterations", __LINE__);
+    bad = params;
+    bad.polish_iterations = UINT32_MAX;
+    expect_refused(curves, &bad, "polish_iterations", __LINE__);
     bad = params;
     bad.width = 0.0;
     expect_refused(curves, &bad, "width", __LINE__);

@@ -58,8 +58,8 @@ pub fn start_field(mesh: &TriMesh, settings: &Settings) -> CliResult<StartField>
         }
         Start::Strokes(path) => {
             let strokes = read_strokes(path)?;
-            let fitted = field_from_strokes(mesh, &strokes, &StrokeOptions::default()).map_err(|e| start_error("strokes", e))?;
-            let estimate = estimate_target_angle(mesh, &fitted.field, &fitted.samples).map_err(|e| start_error("strokes", e))?;
+            let fitted = field_from_strokes(mesh, &strokes, &StrokeOptions::default()).map_err(|e| start_error(mesh, "strokes", e))?;
+            let estimate = estimate_target_angle(mesh, &fitted.field, &fitted.samples).map_err(|e| start_error(mesh, "strokes", e))?;
             let theta = if settings.theta_given { settings.theta } else { estimate };
             Ok(StartField {
                 values: fitted.field,
@@ -78,14 +78,38 @@ pub fn start_field(mesh: &TriMesh, settings: &Settings) -> CliResult<StartField>
 }
 
 fn from_guides(mesh: &TriMesh, curves: &[Vec<EdgePoint>], theta: f64, description: Value) -> CliResult<StartField> {
-    let guide = field_from_guide_curves(mesh, curves, &GuideCurveOptions::default()).map_err(|e| start_error("guides", e))?;
+    let guide = field_from_guide_curves(mesh, curves, &GuideCurveOptions::default()).map_err(|e| start_error(mesh, "guides", e))?;
     Ok(StartField { values: guide.field, theta, gradient_target: Some(guide.gradient_target), description })
 }
 
-/// Initialisation errors caused by the input are bad input; a singular system is internal.
-fn start_error(what: &str, error: InitialisationError) -> CliError {
+/// Initialisation errors are bad input. A singular linear system comes from the mesh (the
+/// systems are regular on any non-degenerate mesh): the message names its sharpest corner.
+fn start_error(mesh: &TriMesh, what: &str, error: InitialisationError) -> CliError {
     match error {
-        InitialisationError::SingularSystem { .. } => CliError::internal(format!("{what}: {error}")),
+        InitialisationError::SingularSystem { .. } => {
+            let (face, degrees) = mesh.sharpest_corner();
+            CliError::bad_input(format!(
+                "{what}: {error}; the mesh is likely numerically degenerate: its sharpest corner is {degrees:.2e}° in face {face}"
+            ))
+        }
         _ => CliError::bad_input(format!("{what}: {error}")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::CliError;
+    use lamella::surfaces::hall_roof;
+
+    #[test]
+    fn a_singular_initial_system_is_bad_input_naming_the_sharpest_corner() {
+        let mesh = hall_roof(60).into_mesh().expect("valid roof");
+        let (face, _) = mesh.sharpest_corner();
+        let error = start_error(&mesh, "guides", InitialisationError::SingularSystem { stage: "conformal map" });
+        assert!(matches!(error, CliError::BadInput(_)), "{error}");
+        assert_eq!(error.exit_code(), 2);
+        let message = error.to_string();
+        assert!(message.contains("conformal map") && message.contains(&format!("in face {face}")), "{message}");
     }
 }
