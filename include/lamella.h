@@ -117,7 +117,7 @@ enum LmlStatus
   LML_STATUS_INVALID_ARGUMENT = -1,
   // The triangles or coordinates do not form a valid mesh: non-finite coordinates, indices
   // out of range, repeated indices, zero-area faces, isolated vertices, non-manifold edges
-  // or vertices, inconsistent orientation, folded faces, malformed OBJ lines.
+  // or vertices, inconsistent orientation, folded faces, slivers, malformed OBJ lines.
   LML_STATUS_INVALID_MESH = -2,
   // The mesh is valid but not a single topological disk (possibly with holes), which the
   // method requires (paper Sec. 7): closed, several components, handles.
@@ -487,7 +487,8 @@ size_t lml_debug_live_handles(void);
 // count, count overflow); `LML_STATUS_INVALID_MESH` (no vertices or faces, NaN/infinite
 // coordinate, index out of range, repeated index, zero-area face, isolated vertex,
 // non-manifold edge or vertex, inconsistent orientation, a fold: two neighbouring faces whose
-// normals are more than 120° apart, e.g. an inverted triangle); `LML_STATUS_NOT_A_DISK` (several
+// normals are more than 120° apart, e.g. an inverted triangle; a sliver: a face with less than
+// 1e-8 times the area of a neighbouring face); `LML_STATUS_NOT_A_DISK` (several
 // components, closed surfaces, handles). The message names the vertex, face or edge.
 LmlStatus lml_mesh_new(const double *xyz,
                        size_t vertex_count,

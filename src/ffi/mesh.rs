@@ -29,7 +29,8 @@ pub struct LmlMesh {
 /// count, count overflow); `LML_STATUS_INVALID_MESH` (no vertices or faces, NaN/infinite
 /// coordinate, index out of range, repeated index, zero-area face, isolated vertex,
 /// non-manifold edge or vertex, inconsistent orientation, a fold: two neighbouring faces whose
-/// normals are more than 120° apart, e.g. an inverted triangle); `LML_STATUS_NOT_A_DISK` (several
+/// normals are more than 120° apart, e.g. an inverted triangle; a sliver: a face with less than
+/// 1e-8 times the area of a neighbouring face); `LML_STATUS_NOT_A_DISK` (several
 /// components, closed surfaces, handles). The message names the vertex, face or edge.
 #[no_mangle]
 pub unsafe extern "C" fn lml_mesh_new(

@@ -19,7 +19,7 @@ pub enum LmlStatus {
     InvalidArgument = -1,
     /// The triangles or coordinates do not form a valid mesh: non-finite coordinates, indices
     /// out of range, repeated indices, zero-area faces, isolated vertices, non-manifold edges
-    /// or vertices, inconsistent orientation, folded faces, malformed OBJ lines.
+    /// or vertices, inconsistent orientation, folded faces, slivers, malformed OBJ lines.
     InvalidMesh = -2,
     /// The mesh is valid but not a single topological disk (possibly with holes), which the
     /// method requires (paper Sec. 7): closed, several components, handles.
