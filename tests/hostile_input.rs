@@ -3,7 +3,7 @@
 
 mod cli_support;
 
-use cli_support::{lamella, small_roof, stderr, stdout, Scratch};
+use cli_support::{assert_bad_input, lamella, small_roof, stderr, stdout, Scratch};
 use lamella::curves::{uniform_levels, CurveError};
 use lamella::ffi::*;
 use lamella::field::{FieldError, FieldParams, FieldSolver, FIELD_VALUE_LIMIT};
@@ -13,18 +13,6 @@ use std::ffi::CStr;
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
 use std::time::Instant;
-
-/// Runs `args` in `dir` and checks exit code 2 with a single stderr line containing every `needle`.
-fn assert_bad_input(dir: &Path, args: &[&str], needles: &[&str]) -> String {
-    let output = lamella(dir, args);
-    let message = stderr(&output);
-    assert_eq!(output.status.code(), Some(2), "{args:?}: {message}");
-    assert_eq!(message.trim_end().lines().count(), 1, "{args:?}: one line, got {message}");
-    for needle in needles {
-        assert!(message.contains(needle), "{args:?}: `{needle}` not in {message}");
-    }
-    message
-}
 
 fn last_error() -> String {
     // SAFETY: never NULL, valid until the next call on this thread.
@@ -86,21 +74,32 @@ struct Session {
 }
 
 impl Session {
-    fn new() -> Session {
-        let mesh = roof_mesh();
+    /// A mesh handle of `mesh` and a θ = 60° session on it started from `field`, or the status
+    /// and message of `lml_field_new` (the mesh handle is then already freed).
+    fn start(mesh: &TriMesh, field: &[f64]) -> Result<Session, (LmlStatus, String)> {
         let xyz: Vec<f64> = mesh.positions().iter().flat_map(|p| [p.x, p.y, p.z]).collect();
         let triangles: Vec<u32> = mesh.faces().iter().flatten().copied().collect();
-        let field = axis_field(&mesh);
-        // SAFETY: arrays of the stated lengths, outputs are locals.
+        // SAFETY: arrays of the stated lengths, outputs are locals; a handle is freed once.
         unsafe {
             let mut handle = std::ptr::null_mut();
             assert_eq!(lml_mesh_new(xyz.as_ptr(), mesh.vertex_count(), triangles.as_ptr(), mesh.face_count(), &mut handle), LmlStatus::Ok);
             let mut params = std::mem::zeroed();
             assert_eq!(lml_field_params_default(LML_FAMILY_PSEUDO_GEODESIC, 60.0, &mut params), LmlStatus::Ok);
             let mut session = std::ptr::null_mut();
-            assert_eq!(lml_field_new(handle, field.as_ptr(), field.len(), &params, &mut session), LmlStatus::Ok);
-            Session { mesh: handle, field: session }
+            match lml_field_new(handle, field.as_ptr(), field.len(), &params, &mut session) {
+                LmlStatus::Ok => Ok(Session { mesh: handle, field: session }),
+                status => {
+                    let message = last_error();
+                    lml_mesh_free(handle);
+                    Err((status, message))
+                }
+            }
         }
+    }
+
+    fn new() -> Session {
+        let mesh = roof_mesh();
+        Session::start(&mesh, &axis_field(&mesh)).expect("a session on the roof")
     }
 }
 
@@ -326,19 +325,9 @@ fn a_huge_field_value_is_named_at_its_vertex() {
     assert!(uniform_levels(&mesh, &field, 3).is_ok(), "the limit itself is allowed");
     // The C ABI: INVALID_ARGUMENT naming the vertex.
     field[7] = 1e300;
-    let xyz: Vec<f64> = mesh.positions().iter().flat_map(|p| [p.x, p.y, p.z]).collect();
-    let triangles: Vec<u32> = mesh.faces().iter().flatten().copied().collect();
-    // SAFETY: arrays of the stated lengths, outputs are locals, handles freed once.
-    unsafe {
-        let mut handle = std::ptr::null_mut();
-        assert_eq!(lml_mesh_new(xyz.as_ptr(), mesh.vertex_count(), triangles.as_ptr(), mesh.face_count(), &mut handle), LmlStatus::Ok);
-        let mut params = std::mem::zeroed();
-        assert_eq!(lml_field_params_default(LML_FAMILY_PSEUDO_GEODESIC, 60.0, &mut params), LmlStatus::Ok);
-        let mut session = std::ptr::null_mut();
-        assert_eq!(lml_field_new(handle, field.as_ptr(), field.len(), &params, &mut session), LmlStatus::InvalidArgument);
-        assert!(last_error().contains("vertex 7") && last_error().contains("out of range"), "{}", last_error());
-        lml_mesh_free(handle);
-    }
+    let (status, message) = Session::start(&mesh, &field).err().expect("refused");
+    assert_eq!(status, LmlStatus::InvalidArgument);
+    assert!(message.contains("vertex 7") && message.contains("out of range"), "{message}");
     // The command line.
     let dir = Scratch::new("huge");
     small_roof(&dir, 60);

@@ -65,7 +65,8 @@ pub struct OutArgs {
     /// Output directory [default: lamella-out].
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
-    /// Replace an existing output directory (otherwise it is refused).
+    /// Replace an existing output directory that a previous Lamella run wrote (it holds the marker
+    /// .lamella-output and only the files listed there); any other existing path is refused.
     #[arg(long)]
     pub force: bool,
 }
