@@ -32,6 +32,8 @@ mod mesh_input;
 #[path = "../src/bin/lamella/strokes_file.rs"]
 mod strokes_file;
 
+mod mesh_support;
+
 mod fuzz_support;
 
 use fuzz_support::{run_target, Options, Target};

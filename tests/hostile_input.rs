@@ -2,6 +2,7 @@
 //! the command line and the C ABI as the audit reached it.
 
 mod cli_support;
+mod mesh_support;
 
 use cli_support::{assert_bad_input, lamella, small_roof, stderr, stdout, Scratch};
 use lamella::curves::{uniform_levels, CurveError};
@@ -9,6 +10,7 @@ use lamella::ffi::*;
 use lamella::field::{FieldError, FieldParams, FieldSolver, FIELD_VALUE_LIMIT};
 use lamella::mesh::{MeshError, TriMesh, Vec3};
 use lamella::surfaces::hall_roof;
+use mesh_support::{folded, obj_text, sliver_grid};
 use std::ffi::CStr;
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
@@ -283,27 +285,14 @@ fn long_tokens_and_long_problem_lists_are_cut() {
 
 // 6. Folded meshes are invalid input, naming the fold.
 
-/// The roof with one interior vertex moved across the column (x, y) of a neighbour, half an
-/// edge beyond it: the triangles between them turn over.
-fn folded_roof() -> (Vec<Vec3>, Vec<[u32; 3]>) {
-    let mesh = roof_mesh();
-    let mut positions = mesh.positions().to_vec();
-    let v = (0..mesh.vertex_count()).find(|&v| !mesh.is_boundary_vertex(v) && mesh.star(v).neighbours.iter().all(|&n| !mesh.is_boundary_vertex(n as usize))).expect("a deep interior vertex");
-    let n = mesh.star(v).neighbours[0] as usize;
-    let (from, to) = (positions[v], positions[n]);
-    positions[v].x = to.x + 0.5 * (to.x - from.x);
-    positions[v].y = to.y + 0.5 * (to.y - from.y);
-    (positions, mesh.faces().to_vec())
-}
-
 #[test]
 fn a_folded_mesh_is_invalid_and_the_fold_is_named() {
-    let (positions, faces) = folded_roof();
+    let (positions, faces) = folded(&roof_mesh());
     let error = TriMesh::from_vertices_and_faces(positions.clone(), faces.clone()).err().expect("a fold is refused");
     assert!(matches!(error, MeshError::FoldedEdge { .. }), "{error}");
     assert!(error.to_string().contains("fold"), "{error}");
     // Through OBJ and the command line: info says invalid, design exits 2 naming the faces.
-    let mesh_text: String = positions.iter().map(|p| format!("v {} {} {}\n", p.x, p.y, p.z)).chain(faces.iter().map(|f| format!("f {} {} {}\n", f[0] + 1, f[1] + 1, f[2] + 1))).collect();
+    let mesh_text = obj_text(&(positions, faces));
     let dir = Scratch::new("fold");
     std::fs::write(dir.path("folded.obj"), mesh_text).expect("write");
     let info = lamella(&dir.0, &["info", "folded.obj"]);
@@ -355,33 +344,9 @@ fn an_endless_input_file_is_refused_at_the_size_limit() {
 
 // 9. A sliver mesh is bad input naming the sliver (it made the initial field's systems singular).
 
-/// An 8 × 8 grid on a gentle dome with a vertex `eps` above the middle of a boundary edge, which
-/// splits that edge's triangle and leaves a sliver of area ≈ eps / 2 on the boundary (face 8).
+/// The 8 × 8 dome with a boundary sliver of area ≈ eps / 2 (face 8), as OBJ text.
 fn sliver_obj(eps: f64) -> String {
-    let n = 8;
-    let id = |i: usize, j: usize| i * (n + 1) + j;
-    let mut v: Vec<[f64; 3]> = Vec::new();
-    for i in 0..=n {
-        for j in 0..=n {
-            let (x, y) = (j as f64, i as f64);
-            v.push([x, y, 0.1 * ((x - 4.0).powi(2) + (y - 4.0).powi(2)) / 16.0]);
-        }
-    }
-    let mut f = Vec::new();
-    for i in 0..n {
-        for j in 0..n {
-            let (a, b, c, d) = (id(i, j), id(i, j + 1), id(i + 1, j + 1), id(i + 1, j));
-            if i == 0 && j == n / 2 {
-                let m = v.len();
-                v.push([(v[a][0] + v[b][0]) / 2.0, eps, (v[a][2] + v[b][2]) / 2.0]);
-                f.extend([[a, b, m], [a, m, c], [m, b, c], [a, c, d]]);
-            } else {
-                f.extend([[a, b, c], [a, c, d]]);
-            }
-        }
-    }
-    let vertices = v.iter().map(|p| format!("v {} {} {}\n", p[0], p[1], p[2]));
-    vertices.chain(f.iter().map(|t| format!("f {} {} {}\n", t[0] + 1, t[1] + 1, t[2] + 1))).collect()
+    obj_text(&sliver_grid(8, eps))
 }
 
 #[test]

@@ -43,11 +43,13 @@ pub struct Options {
     pub execs: Option<u64>,
     pub seed: u64,
     pub write_corpus: Option<PathBuf>,
+    /// Print the outcome of every seed and regression (to judge what the corpus reaches).
+    pub show_seeds: bool,
 }
 
 impl Options {
-    /// Parses `--target NAME`, `--seconds S`, `--execs N`, `--seed K`, `--write-corpus DIR`
-    /// (cargo's own test flags, e.g. `--nocapture`, are ignored).
+    /// Parses `--target NAME`, `--seconds S`, `--execs N`, `--seed K`, `--write-corpus DIR`,
+    /// `--show-seeds` (cargo's own test flags, e.g. `--nocapture`, are ignored).
     pub fn from_args(args: impl Iterator<Item = String>) -> Result<Options, String> {
         let mut options = Options { seed: 1, ..Options::default() };
         let mut args = args.peekable();
@@ -59,6 +61,7 @@ impl Options {
                 "--execs" => options.execs = Some(value()?.parse().map_err(|e| format!("--execs: {e}"))?),
                 "--seed" => options.seed = value()?.parse().map_err(|e| format!("--seed: {e}"))?,
                 "--write-corpus" => options.write_corpus = Some(PathBuf::from(value()?)),
+                "--show-seeds" => options.show_seeds = true,
                 _ => {}
             }
         }
@@ -160,6 +163,9 @@ pub fn run_target(target: &Target, options: &Options) -> RunResult {
         current.lock().unwrap_or_else(|e| e.into_inner()).0 = None;
         let seconds = one.elapsed().as_secs_f64();
         executions += 1;
+        if fixed && options.show_seeds {
+            println!("seed of {}: {:?}", target.name, outcome.as_ref().map_err(|_| "panic"));
+        }
         let finding = match outcome {
             Err(_) => Some(panic_message.lock().unwrap_or_else(|e| e.into_inner()).take().unwrap_or_else(|| "panic".into())),
             Ok(Err(broken)) => Some(format!("invariant: {broken}")),

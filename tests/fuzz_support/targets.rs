@@ -3,6 +3,7 @@
 use super::{Target, Verdict};
 use crate::config::GuideSide;
 use crate::field_files::{field_csv, parse_field_csv};
+use crate::mesh_support::{folded, obj_text as soup_obj, sliver_grid};
 use crate::guides::{guides_json, parse_guides_json, trace_guides};
 use crate::strokes_file::parse_strokes;
 use lamella::curves::{extract_level_curves, uniform_levels};
@@ -57,10 +58,11 @@ fn bounded(message: String) -> Verdict {
 
 fn obj_seeds() -> Vec<Vec<u8>> {
     let mut seeds = vec![obj_text(roof()), obj_text(&hall_roof(12).into_mesh().expect("valid"))];
-    seeds.push(b"# quads, relative indices, texture and normal indices\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\ng patch\nf 1/1/1 2/1/1 3/1/1 4/1/1\nf -4//1 -2//1 -1//1\n".to_vec());
-    // A fold: vertex 4 of a 3 x 3 grid pulled onto its neighbour's column, and a sliver.
-    seeds.push(b"v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 1\nv 2 1 0\nv 0 2 0\nv 1 2 0\nv 2 2 0\nf 1 2 5\nf 1 5 4\nf 2 3 6\nf 2 6 5\nf 4 5 8\nf 4 8 7\nf 5 6 9\nf 5 9 8\n".to_vec());
-    seeds.push(b"v 0 0 0\nv 1 0 0\nv 0.5 1e-13 0\nv 0.5 -1 0\nf 1 2 3\nf 1 4 2\n".to_vec());
+    seeds.push(b"# quads, relative indices, texture and normal indices\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\ng patch\nf 1/1/1 2/1/1 3/1/1 4/1/1\nv 2 0 0\nf -4//1 -1//1 -3//1\n".to_vec());
+    // A fold (a vertex pulled across its neighbour), a sliver, and a sliver just above the limit.
+    seeds.push(soup_obj(&folded(roof())).into_bytes());
+    seeds.push(soup_obj(&sliver_grid(4, 1e-11)).into_bytes());
+    seeds.push(soup_obj(&sliver_grid(4, 1e-6)).into_bytes());
     seeds
 }
 
@@ -159,7 +161,7 @@ fn strokes_seeds() -> Vec<Vec<u8>> {
     let mesh = roof();
     let boundary: Vec<Vec3> = mesh.boundary_loops()[0].iter().map(|&v| mesh.positions()[v as usize]).collect();
     let n = boundary.len();
-    let piece = |from: usize| boundary[from..from + n / 8].to_vec();
+    let piece = |from: usize| boundary[from..from + n / 4].to_vec();
     vec![strokes_json(&[piece(0), piece(n / 2)]), strokes_json(&[piece(0), piece(n / 4), piece(n / 2)])]
 }
 
