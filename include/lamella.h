@@ -7,18 +7,26 @@
  *   LmlGuides  guide P-curves traced from the boundary (Sec. 3.2.1): polylines, their
  *              points on mesh edges, why each stopped, crossings; with
  *              lml_field_values_from_guides (or _from_strokes) they give the initial field;
+ *   LmlSearch  the default start search: several initial fields (heights along the
+ *              surface's principal directions, guides from each boundary side), a short
+ *              solve from each, the level curves judged against the smooth surface; the
+ *              best continues as an LmlField;
  *   LmlField   a field solver session: a scalar field whose level curves form a
- *              pseudo-geodesic, geodesic or asymptotic family, stepped until converged,
- *              saved and restored;
+ *              pseudo-geodesic, geodesic or asymptotic family (θ = 0° and 180° are the
+ *              asymptotic curves, 90° the geodesics), stepped until converged, saved and
+ *              restored;
  *   LmlCurves  level curves of a field: polylines (points + offsets), level values,
  *              normals, closed flags;
  *   LmlStrips  rectifying developable strips along the curves: planar quads (vertices +
  *              quad indices + per-strip offsets), centre lines, rulings, flat unrollings,
- *              per-strip and overall quality measures (paper Table 4) and warning flags.
- * A typical run: lml_mesh_new -> [lml_boundary_starts -> lml_guides_trace ->
- * lml_field_values_from_guides ->] lml_field_new -> lml_field_step until
- * LML_STATUS_CONVERGED -> lml_curves_new_uniform -> lml_strips_new -> read the arrays ->
- * free the handles (in any order: no handle depends on another being alive).
+ *              per-strip and overall quality measures (paper Table 4), warning flags, and
+ *              the verdict: LML_STATUS_NO_ACCEPTABLE_FAMILY when the strips miss θ.
+ * A typical run: lml_mesh_new -> lml_search_new -> lml_search_step until LML_STATUS_OK ->
+ * lml_search_field (or, from guides: lml_boundary_starts -> lml_guides_trace ->
+ * lml_field_values_from_guides -> lml_field_new) -> lml_field_step until
+ * LML_STATUS_CONVERGED -> lml_curves_new_uniform -> lml_strips_new (LML_STATUS_OK, or
+ * LML_STATUS_NO_ACCEPTABLE_FAMILY: built, but missing θ) -> read the arrays -> free the
+ * handles (in any order: no handle depends on another being alive).
  *
  * Conventions
  * - Names: functions lml_*, types Lml*, constants LML_*. Plain C99; includable from C++
@@ -27,7 +35,8 @@
  *   _read_obj) creates one and hands ownership to the caller, lml_<handle>_free releases
  *   it (NULL is accepted). A handle never borrows caller memory or another handle.
  * - Every fallible function returns an LmlStatus: >= 0 is success (LML_STATUS_OK,
- *   LML_STATUS_MORE, LML_STATUS_CONVERGED), < 0 a failure; lml_last_error_message() then
+ *   LML_STATUS_MORE, LML_STATUS_CONVERGED, LML_STATUS_NO_ACCEPTABLE_FAMILY: outputs valid,
+ *   verdict negative, message set), < 0 a failure; lml_last_error_message() then
  *   describes it and names the offending element. NULL pointers, misaligned pointers,
  *   wrong lengths, NaN/infinite values and out-of-range indices are reported, never
  *   undefined behaviour; a panic inside the library is caught and returned as
@@ -68,6 +77,12 @@
 // `lml_abi_version()` at start-up to detect a header / library mismatch.
 #define LML_ABI_VERSION 1
 
+// `LmlCandidate::kind`: the height along `direction` (negated if `negated` is 1).
+#define LML_START_HEIGHT 0
+
+// `LmlCandidate::kind`: guides traced from boundary side `side` at `start_angle_degrees`.
+#define LML_START_GUIDES 1
+
 // Most levels one `lml_curves_new` / `lml_curves_new_uniform` call accepts. (A literal, so
 // that the header can show it; equal to the library's limit.)
 #define LML_MAX_LEVELS 10000
@@ -98,9 +113,10 @@
 // show it; equal to the library's limit.)
 #define LML_MAX_STARTS 10000
 
-// Result of an `lml_*` call. `LML_STATUS_OK`, `LML_STATUS_MORE` and `LML_STATUS_CONVERGED`
-// are successes (≥ 0); every failure is negative, and `lml_last_error_message()` then says
-// what went wrong and names the offending element (vertex, face, byte offset, argument).
+// Result of an `lml_*` call. `LML_STATUS_OK`, `LML_STATUS_MORE`, `LML_STATUS_CONVERGED` and
+// `LML_STATUS_NO_ACCEPTABLE_FAMILY` are successes (≥ 0: the outputs are valid); every failure
+// is negative, and `lml_last_error_message()` then says what went wrong and names the
+// offending element (vertex, face, byte offset, argument).
 enum LmlStatus
 #if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
   : int32_t
@@ -112,6 +128,11 @@ enum LmlStatus
   LML_STATUS_MORE = 1,
   // `lml_field_step` / `lml_field_solve`: the optimisation has converged; further steps do nothing.
   LML_STATUS_CONVERGED = 2,
+  // `lml_strips_new`: the strips were built (the handle is valid) but miss the target angle
+  // by more than the tolerance somewhere, or have flipped quads: no acceptable family.
+  // `lml_last_error_message()` names the strips and the worst point and says what to try;
+  // `lml_strips_verdict` gives the numbers.
+  LML_STATUS_NO_ACCEPTABLE_FAMILY = 3,
   // A NULL or misaligned pointer, a wrong array length, a non-finite or out-of-range
   // parameter, an unreadable file.
   LML_STATUS_INVALID_ARGUMENT = -1,
@@ -168,6 +189,11 @@ typedef struct LmlGuides LmlGuides;
 // A validated triangle mesh (opaque). Create it with `lml_mesh_new` or `lml_mesh_read_obj`,
 // release it with `lml_mesh_free`. Immutable once created.
 typedef struct LmlMesh LmlMesh;
+
+// A start search (opaque). Create it with `lml_search_new`, step it with `lml_search_step`
+// until it returns `LML_STATUS_OK`, read its candidates, take the field with
+// `lml_search_field`, release it with `lml_search_free`.
+typedef struct LmlSearch LmlSearch;
 
 // A strip pattern (opaque): one rectifying strip per level curve that could carry one, with
 // its flat unrolling and metrics, and the curves that were skipped. Create it with
@@ -253,6 +279,33 @@ typedef struct LmlReport {
   uint64_t converged;
 } LmlReport;
 
+// One candidate start of a search and how its short solve ended. Angles in degrees.
+typedef struct LmlCandidate {
+  // `LML_START_HEIGHT` or `LML_START_GUIDES`.
+  uint32_t kind;
+  // Height candidates: 1 when the field is minus the height.
+  uint32_t negated;
+  // Height candidates: the unit direction.
+  double direction[3];
+  // Guide candidates: the boundary side (of the outer loop split at corners of 30°).
+  uint64_t side;
+  // Guide candidates: the angle of the guides' first segments against the boundary.
+  double start_angle_degrees;
+  // 1 when the candidate was scored (`score` valid), 0 when it was rejected.
+  uint32_t scored;
+  // 1 when it was rejected (degenerate family, unmeasurable curves or a failed solve; the
+  // reason is in `lml_search_candidate_text`).
+  uint32_t rejected;
+  // Lower is better: RMS + a quarter of the max angle error along the level curves, plus
+  // penalties for nearly straight pieces and singular vertices.
+  double score;
+  double rms_error_degrees;
+  double max_error_degrees;
+  // Fraction of the measured level-curve points that are nearly straight.
+  double straight_fraction;
+  uint64_t singular_vertices;
+} LmlCandidate;
+
 // The weights λ of the strip energies (paper Sec. 3.4), each finite and ≥ 0 (`planarity` > 0);
 // each residual is multiplied by √λ. Lengths inside them are in units of a polyline's mean
 // edge length, so the defaults suit any scale.
@@ -293,8 +346,28 @@ typedef struct LmlStripParams {
   double theta_degrees;
   // Width of the flat strip (distance between its two straight boundaries), finite and > 0.
   double width;
+  // Largest angle error in degrees, in (0, 180), of a quad of an acceptable pattern: beyond it
+  // (or with flipped quads) `lml_strips_new` returns `LML_STATUS_NO_ACCEPTABLE_FAMILY`. Default 2.
+  double tolerance_degrees;
   struct LmlStripWeights weights;
 } LmlStripParams;
+
+// The verdict on a strip pattern (see `lml_strips_verdict`). Angles in degrees.
+typedef struct LmlVerdict {
+  // 1 when every strip is within the tolerance of θ and no quad is flipped (and at least one
+  // strip was built), 0 otherwise.
+  uint64_t acceptable;
+  double tolerance_degrees;
+  // Strips with a quad more than the tolerance off θ.
+  uint64_t strips_missing_theta;
+  // Strips with flipped quads.
+  uint64_t strips_with_flipped_quads;
+  // The quad that misses θ most: its strip, its index along the strip, its centre and error.
+  uint64_t worst_strip;
+  uint64_t worst_quad;
+  double worst_point[3];
+  double worst_error_degrees;
+} LmlVerdict;
 
 // A set of `LML_STRIP_WARNING_*` bits.
 typedef uint64_t LmlStripWarnings;
@@ -325,6 +398,12 @@ typedef struct LmlStripMetrics {
   uint64_t flipped_quads;
   // The strip's `LML_STRIP_WARNING_*` bits (0: none).
   LmlStripWarnings warnings;
+  // Max over the quads of the error of the strip plane's angle: the in-plane direction across
+  // the centre line against the smooth surface normal (the quad normal should make 90° − θ
+  // with it); defined where the centre line is straight too. What the verdict judges.
+  double max_quad_angle_error_degrees;
+  // The longest ruling segment from the centre line to a boundary, over the strip width.
+  double max_ruling_over_width;
 } LmlStripMetrics;
 
 // Table 4 over a whole pattern: maxima over its strips, and the sum of E_planar.
@@ -340,6 +419,10 @@ typedef struct LmlPatternMetrics {
   double max_planar;
   double appro_percent;
   uint64_t flipped_quads;
+  // Max over all strips of `LmlStripMetrics::max_quad_angle_error_degrees`.
+  double max_quad_angle_error_degrees;
+  // Max over all strips of `LmlStripMetrics::max_ruling_over_width`.
+  double max_ruling_over_width;
 } LmlPatternMetrics;
 
 // A level curve no strip could be built on, and why.
@@ -651,6 +734,61 @@ LmlStatus lml_field_singular_vertices(const struct LmlField *field,
                                       size_t capacity,
                                       size_t *needed);
 
+// Prepares a start search on `mesh` for a field of `params` (its family by θ: 0° and 180° the
+// asymptotic curves, 90° the geodesics; its weights and schedule; its gradient target is
+// ignored: each candidate brings its own). The search keeps its own copy of the mesh.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, a parameter out of
+// range, named). `*out` is set to NULL on failure.
+LmlStatus lml_search_new(const struct LmlMesh *mesh,
+                         const struct LmlFieldParams *params,
+                         struct LmlSearch **out);
+
+// Releases a search. NULL is accepted and ignored. The handle must not be used (or freed) again.
+void lml_search_free(struct LmlSearch *search);
+
+// Probes the next candidate: a short solve (20 iterations) from its start, then its level
+// curves measured against the smooth surface. Each call takes about 20 field iterations.
+//
+// Returns `LML_STATUS_MORE` (candidates remain: step again), `LML_STATUS_OK` (the search is
+// complete), `LML_STATUS_INVALID_ARGUMENT` (NULL handle, or the field was already taken).
+// A candidate whose own solve fails is rejected, not a failure of the call.
+LmlStatus lml_search_step(struct LmlSearch *search);
+
+// Writes the number of candidates probed so far to `*count`.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_search_candidate_count(const struct LmlSearch *search, size_t *count);
+
+// Writes candidate `index` (in probing order) to `*candidate`.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument, index out of range).
+LmlStatus lml_search_candidate(const struct LmlSearch *search,
+                               size_t index,
+                               struct LmlCandidate *candidate);
+
+// Writes a description of candidate `index` as UTF-8 text with a terminating NUL, e.g.
+// "height along (1.000, 0.000, 0.000): score 1.19" or "...: rejected: degenerate: ...", with
+// the two-call pattern: `*needed` receives the byte count including the NUL.
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL`, or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_search_candidate_text(const struct LmlSearch *search,
+                                    size_t index,
+                                    uint8_t *text,
+                                    size_t capacity,
+                                    size_t *needed);
+
+// Writes the index of the best candidate so far to `*index`.
+// Returns `LML_STATUS_OK`, or `LML_STATUS_INVALID_ARGUMENT` (NULL argument, or no candidate
+// scored yet: every one so far was rejected).
+LmlStatus lml_search_winner(const struct LmlSearch *search, size_t *index);
+
+// Takes the field of the best candidate: a new `LmlField` (owned by the caller, released with
+// `lml_field_free`) that continues from where that candidate's short solve ended, with the
+// final weights; step it to convergence. Ends the search (its candidates stay readable).
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_SINGULAR_FIELD` (every candidate was rejected: the
+// message gives each reason; the search stays usable for reading); `LML_STATUS_INVALID_ARGUMENT`
+// (NULL argument, the field was already taken). `*out` is set to NULL on failure.
+LmlStatus lml_search_field(struct LmlSearch *search, struct LmlField **out);
+
 // Serialises the whole session (mesh, field, auxiliary variables, parameters, weight stage,
 // solver damping) as bytes: the magic `"LMLF"`, a little-endian `uint32_t` format version,
 // then the state. The bytes are portable across platforms; a restored session continues bit
@@ -804,15 +942,25 @@ LmlStatus lml_strip_params_default(double theta_degrees, double width, struct Lm
 // A polyline that cannot carry a strip (fewer than 3 points, a zero-length segment, a failed
 // optimisation) does not fail the call: it is listed by `lml_strips_skipped`.
 //
-// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer; width not finite or
-// ≤ 0, θ outside [0, 180], a weight negative or not finite, an iteration count above
-// `LML_MAX_STRIP_ROUNDS` / `LML_MAX_STRIP_ITERATIONS` (the parameter is named)).
+// Returns `LML_STATUS_OK` (every strip's plane within `params->tolerance_degrees` of θ, no
+// flipped quad); `LML_STATUS_NO_ACCEPTABLE_FAMILY` (the strips are built and `*out` is valid,
+// but some miss θ by more than the tolerance or have flipped quads, or no strip could be
+// built: `lml_last_error_message()` names the strips and the worst point and what to try,
+// `lml_strips_verdict` gives the numbers); `LML_STATUS_INVALID_ARGUMENT` (NULL pointer; width
+// not finite or ≤ 0, θ outside [0, 180], tolerance outside (0, 180), a weight negative or not
+// finite, an iteration count above `LML_MAX_STRIP_ROUNDS` / `LML_MAX_STRIP_ITERATIONS` (the
+// parameter is named)).
 LmlStatus lml_strips_new(const struct LmlCurves *curves,
                          const struct LmlStripParams *params,
                          struct LmlStrips **out);
 
 // Releases strips. NULL is accepted and ignored. The handle must not be used (or freed) again.
 void lml_strips_free(struct LmlStrips *strips);
+
+// Writes the verdict on the strips to `*verdict`: whether they meet θ within the tolerance they
+// were built with, without flipped quads, and where they miss most.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_strips_verdict(const struct LmlStrips *strips, struct LmlVerdict *verdict);
 
 // Writes the number of strips `s` to `*count`.
 // Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).

@@ -62,10 +62,14 @@ fn default_run_meets_the_quality_bounds_and_writes_well_formed_files() {
         let diff = s["max_diff_theta_degrees"].as_f64().expect("diff θ");
         let straight = s["e_straight"].as_f64().expect("e_straight");
         assert!(diff <= 2.0, "{}: max diff θ {diff}°", s["name"]);
+        let plane = s["max_quad_angle_error_degrees"].as_f64().expect("strip plane error");
+        assert!(plane <= 2.0, "{}: strip plane {plane}° off", s["name"]);
         assert!(straight <= 1e-3, "{}: e_straight {straight}", s["name"]);
         assert!(s["length_m"].as_f64().expect("length") > 0.0);
     }
     assert_eq!(report["strips"]["overall"]["strip_count"].as_u64(), Some(strips.len() as u64));
+    assert_eq!(report["strips"]["acceptable"], true, "{}", report["strips"]["verdict_message"]);
+    assert_eq!(report["parameters"]["start"]["kind"], "search");
     // Per-iteration history: iterations 0, 1, …, n without gaps.
     let history = report["field"]["history"].as_array().expect("history");
     let iterations = report["field"]["iterations"].as_u64().expect("iterations");
@@ -100,4 +104,44 @@ fn default_run_meets_the_quality_bounds_and_writes_well_formed_files() {
     // No staging directories are left beside the output.
     let leftovers: Vec<_> = std::fs::read_dir(&dir.0).expect("dir").filter_map(Result::ok).filter(|e| e.file_name() != "lamella-out").collect();
     assert!(leftovers.is_empty(), "left behind: {leftovers:?}");
+}
+
+#[test]
+fn a_surface_without_the_family_exits_three_with_the_verdict() {
+    // A sphere cap and θ = 10°: the P-curves are small circles (spherical radius 2θ) that cannot
+    // cover the cap (paper Sec. 3.3). The design writes its outputs and says so: exit 3.
+    let dir = Scratch::new("no-family");
+    let cap = lamella::surfaces::SphereCap { radius: 10.0, cap_angle: 35f64.to_radians(), target_vertices: 1200, irregularity: 0.25, seed: 2 };
+    let mesh = lamella::surfaces::sphere_cap(&cap).expect("valid cap").into_mesh().expect("valid mesh");
+    mesh.write_obj(std::fs::File::create(dir.path("cap.obj")).expect("create")).expect("write");
+    let output = lamella(&dir.0, &["design", "--mesh", "cap.obj", "--theta", "10", "--strips", "8", "--out", "d"]);
+    assert_eq!(output.status.code(), Some(3), "{}", stderr(&output));
+    let last = stderr(&output).lines().last().unwrap_or_default().to_string();
+    assert!(last.starts_with("lamella: no acceptable family: strip"), "{last}");
+    assert!(last.contains("worst: strip") && last.contains("° off") && last.contains("try"), "{last}");
+    let report = read_json(&dir.path("d/report.json"));
+    assert_eq!(report["strips"]["acceptable"], false);
+    assert!(report["strips"]["overall"]["max_quad_angle_error_degrees"].as_f64().expect("error") > 2.0);
+    assert!(report["parameters"]["start"]["candidates"].as_array().is_some_and(|c| !c.is_empty()), "the search's candidates are listed");
+    // A looser tolerance does not make it acceptable when quads flip or miss by more.
+    let strict = lamella(&dir.0, &["design", "--mesh", "cap.obj", "--theta", "60", "--strips", "8", "--tolerance", "0.001", "--out", "t"]);
+    assert_eq!(strict.status.code(), Some(3), "a 0.001° tolerance is missed: {}", stderr(&strict));
+}
+
+#[test]
+fn family_names_and_their_angles_must_agree() {
+    let dir = Scratch::new("family");
+    for (args, needle) in [
+        (vec!["design", "--family", "geodesic", "--theta", "60"], "--family geodesic means θ = 90°"),
+        (vec!["design", "--family", "asymptotic", "--theta", "30"], "--family asymptotic means θ = 0°"),
+        (vec!["design", "--family", "pseudo-geodesic", "--theta", "90"], "geodesic family"),
+        (vec!["design", "--family", "spiral"], "is not asymptotic, geodesic or pseudo-geodesic"),
+        (vec!["design", "--direction", "0,0,0"], "--direction = 0,0,0"),
+        (vec!["design", "--direction", "1,2"], "is not three numbers"),
+        (vec!["design", "--tolerance", "0"], "--tolerance = 0"),
+    ] {
+        let output = lamella(&dir.0, &args);
+        assert_eq!(output.status.code(), Some(2), "{args:?}: {}", stderr(&output));
+        assert!(stderr(&output).contains(needle), "{args:?}: `{needle}` not in {}", stderr(&output));
+    }
 }

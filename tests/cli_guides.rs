@@ -93,26 +93,37 @@ fn design_traces_its_own_guides_or_follows_strokes() {
     let dir = Scratch::new("start");
     let obj = small_roof(&dir, 400);
     let m = obj.to_str().expect("utf-8");
+    // Guides from this side of the coarse roof lead to a family with straight stretches (about a
+    // fifth of the level curves), where no developable strip keeps 60°: the design writes its
+    // outputs and says so, exit 3, in one line naming the strips and the worst point.
     let design = ["design", "--mesh", m, "--guides", "3", "--guide-side", "0", "--guide-angle", "60", "--strips", "6", "--out", "d", "-q"];
-    assert_ok(&lamella(&dir.0, &design));
+    let output = lamella(&dir.0, &design);
+    assert_eq!(output.status.code(), Some(3), "{}", stderr(&output));
+    let message = stderr(&output);
+    assert_eq!(message.lines().count(), 1, "{message}");
+    assert!(message.starts_with("lamella: no acceptable family: strip"), "{message}");
+    assert!(message.contains("worst: strip") && message.contains("try"), "{message}");
     let report = read_json(&dir.path("d/report.json"));
     assert_eq!(report["parameters"]["start"]["kind"], "traced guides");
     assert!(report["parameters"]["start"]["gradient_target"].is_null(), "the target is the solver's, not a start key");
-    assert!(report["field"]["angle_error_max_degrees"].as_f64().expect("max") < 0.5);
+    assert_eq!(report["strips"]["acceptable"], false);
+    let worst = report["strips"]["verdict"]["worst"]["error_degrees"].as_f64().expect("worst error");
+    assert!(worst > 2.0, "the verdict's worst quad is {worst}° off");
+    assert!(dir.path("d/strips.obj").is_file() && dir.path("d/unrolled.svg").is_file(), "the outputs are written");
 
     // Strokes drawn along P-curves of 60° (the traced guides' points): θ is estimated from them.
     assert_ok(&lamella(&dir.0, &["trace", "--mesh", m, "--guides", "3", "--guide-side", "0", "--guide-angle", "60", "--out", "g", "-q"]));
     let strokes: Vec<Vec<[f64; 3]>> =
         guide_positions(&read_json(&dir.path("g/guides.json"))).iter().map(|g| g.iter().map(|p| [p.x, p.y, p.z]).collect()).collect();
     std::fs::write(dir.path("strokes.json"), serde_json::json!({ "strokes": strokes }).to_string()).expect("write strokes");
-    assert_ok(&lamella(&dir.0, &["design", "--mesh", m, "--strokes", "strokes.json", "--strips", "6", "--out", "s", "-q"]));
+    assert_ok(&lamella(&dir.0, &["field", "--mesh", m, "--strokes", "strokes.json", "--out", "s", "-q"]));
     let report = read_json(&dir.path("s/report.json"));
     let estimate = report["parameters"]["start"]["estimated_theta_degrees"].as_f64().expect("estimate");
     // The estimate averages level-set angles at the vertices nearest the strokes; on this coarse
     // roof (mean edge ≈ 1.6 m) that is within 2.5° of the strokes' own angle.
     assert!((estimate - 60.0).abs() < 2.5, "estimated θ = {estimate}°");
     assert_eq!(report["parameters"]["theta_degrees"].as_f64(), Some(estimate), "the estimate is the target");
-    assert!(report["field"]["angle_error_max_degrees"].as_f64().expect("max") < 0.5);
+    assert!(report["field"]["angle_error_max_degrees"].as_f64().expect("max") < 1.0);
 }
 
 /// Runs `args` and checks exit code 2 with a message containing `expected`.

@@ -40,9 +40,11 @@ fn field_resume_continues_where_it_stopped() {
     let dir = Scratch::new("resume");
     let obj = small_roof(&dir, 400);
     let m = obj.to_str().expect("utf-8");
-    assert_ok(&lamella(&dir.0, &["field", "--mesh", m, "--max-iterations", "4", "--out", "part", "-q"]));
+    // An explicit start, whose warm-up schedule takes more than 9 iterations.
+    let start = ["--direction", "1,0,0"];
+    assert_ok(&lamella(&dir.0, &[&["field", "--mesh", m, "--max-iterations", "4", "--out", "part", "-q"][..], &start].concat()));
     assert_ok(&lamella(&dir.0, &["field", "--resume", "part/session.bin", "--max-iterations", "9", "--out", "resumed", "-q"]));
-    assert_ok(&lamella(&dir.0, &["field", "--mesh", m, "--max-iterations", "9", "--out", "whole", "-q"]));
+    assert_ok(&lamella(&dir.0, &[&["field", "--mesh", m, "--max-iterations", "9", "--out", "whole", "-q"][..], &start].concat()));
     let part = read_json(&dir.path("part/report.json"));
     let resumed = read_json(&dir.path("resumed/report.json"));
     let whole = read_json(&dir.path("whole/report.json"));

@@ -8,7 +8,7 @@ use cli_support::{assert_bad_input, lamella, small_roof, stderr, stdout, Scratch
 use lamella::curves::{uniform_levels, CurveError};
 use lamella::ffi::*;
 use lamella::field::{FieldError, FieldParams, FieldSolver, FIELD_VALUE_LIMIT};
-use lamella::mesh::{MeshError, TriMesh, Vec3};
+use lamella::mesh::{MeshError, TriMesh};
 use lamella::surfaces::hall_roof;
 use mesh_support::{folded, obj_text, sliver_grid};
 use std::ffi::CStr;

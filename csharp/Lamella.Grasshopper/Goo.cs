@@ -1,3 +1,4 @@
+using System.Globalization;
 using Grasshopper.Kernel.Types;
 
 namespace Lamella.Grasshopper
@@ -51,7 +52,7 @@ namespace Lamella.Grasshopper
         public override string TypeName => "Lamella Field";
         public override string TypeDescription => "A P-curve field on a mesh (a native Lamella solver session)";
         public override IGH_Goo Duplicate() => new FieldGoo(Value);
-        public override string ToString() => Value == null ? "no field" : "Lamella field, θ = " + Value.ThetaDegrees + "°";
+        public override string ToString() => Value == null ? "no field" : string.Format(CultureInfo.InvariantCulture, "Lamella field, θ = {0:0.###}°", Value.ThetaDegrees);
     }
 
     public sealed class CurvesGoo : GH_Goo<CurvesData>
@@ -81,6 +82,6 @@ namespace Lamella.Grasshopper
         public override string TypeName => "Lamella Guides";
         public override string TypeDescription => "Traced guide curves (P-curves) on a mesh, in order: the level sets F = 0, 1, 2, … of a start field";
         public override IGH_Goo Duplicate() => new GuidesGoo(Value);
-        public override string ToString() => Value == null ? "no guides" : "Lamella guides, θ = " + Value.ThetaDegrees + "°";
+        public override string ToString() => Value == null ? "no guides" : string.Format(CultureInfo.InvariantCulture, "Lamella guides, θ = {0:0.###}°", Value.ThetaDegrees);
     }
 }

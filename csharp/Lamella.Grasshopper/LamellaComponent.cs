@@ -2,25 +2,71 @@ using System;
 using System.Drawing;
 using Grasshopper.Kernel;
 using Grasshopper.Kernel.Types;
+using Lamella.Hosting;
 
 namespace Lamella.Grasshopper
 {
     /// <summary>
     /// The common frame of the Lamella components: tab "Lamella", icon by name, the native library loaded before
-    /// the first call, and every failure (bad input, a native status, a replaced upstream result) turned into a
-    /// component error instead of an exception.
+    /// the first call, every failure (bad input, a native status, a replaced upstream result) turned into a component
+    /// error instead of an exception, and the lifetime of native results: one per iteration (list item or tree
+    /// branch) of a solution, kept while downstream components read them, released when the next solution starts, when
+    /// the component leaves its document or when the document closes.
     /// </summary>
     public abstract class LamellaComponent : GH_Component
     {
         private readonly string iconName;
+        private readonly IterationSlots<IDisposable> results = new IterationSlots<IDisposable>();
 
         protected LamellaComponent(string name, string nickname, string description, string iconName)
-            : base(name, nickname, description, "Lamella", "Strips")
+            : base(name, nickname, description, LamellaInfo.Category, "Strips")
         {
             this.iconName = iconName;
         }
 
         protected override Bitmap Icon => Icons.Load(iconName);
+
+        protected override void BeforeSolveInstance()
+        {
+            base.BeforeSolveInstance();
+            Guard(BeginSolution);
+        }
+
+        protected override void AfterSolveInstance()
+        {
+            Guard(EndSolution);
+            base.AfterSolveInstance();
+        }
+
+        public override void RemovedFromDocument(GH_Document document)
+        {
+            Guard(ReleaseNative);
+            base.RemovedFromDocument(document);
+        }
+
+        public override void DocumentContextChanged(GH_Document document, GH_DocumentContext context)
+        {
+            if (context == GH_DocumentContext.Close) Guard(ReleaseNative);
+            base.DocumentContextChanged(document, context);
+        }
+
+        /// <summary>A new solution starts: by default the previous solution's results are released.</summary>
+        protected virtual void BeginSolution() => results.Clear();
+
+        /// <summary>Every iteration of the solution has run.</summary>
+        protected virtual void EndSolution()
+        {
+        }
+
+        /// <summary>Releases every native object the component holds (removed from the document, or the document closes).</summary>
+        protected virtual void ReleaseNative() => results.Clear();
+
+        /// <summary>Keeps <paramref name="result"/> alive as the result of this iteration until the next solution, and returns it.</summary>
+        protected T Keep<T>(IGH_DataAccess DA, T result) where T : class, IDisposable
+        {
+            results.Set(DA.Iteration, result);
+            return result;
+        }
 
         protected sealed override void SolveInstance(IGH_DataAccess DA)
         {
@@ -30,9 +76,15 @@ namespace Lamella.Grasshopper
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Error, loadError);
                 return;
             }
+            Guard(() => Solve(DA));
+        }
+
+        /// <summary>Runs <paramref name="work"/>, turning any exception into an error message.</summary>
+        private void Guard(Action work)
+        {
             try
             {
-                Solve(DA);
+                work();
             }
             catch (LamellaException e)
             {
@@ -49,7 +101,7 @@ namespace Lamella.Grasshopper
             }
         }
 
-        /// <summary>The component's work; inputs already read by the caller are checked here.</summary>
+        /// <summary>The component's work for one iteration; inputs already read by the caller are checked here.</summary>
         protected abstract void Solve(IGH_DataAccess DA);
 
         /// <summary>The value of a goo input, or null when it is missing or of another type (then with an error message).</summary>
@@ -80,6 +132,25 @@ namespace Lamella.Grasshopper
             }
             value = typed.Value;
             return true;
+        }
+
+        /// <summary>
+        /// The cleaned copy of a mesh input at the document's tolerance, with a remark saying what cleaning changed
+        /// (see <see cref="Conversion.CleanMesh"/>).
+        /// </summary>
+        protected Conversion.CleanMesh CleanMeshInput(Rhino.Geometry.Mesh mesh)
+        {
+            Conversion.CleanMesh clean = RhinoConversion.Clean(mesh, WeldTolerance());
+            string remark = clean.Describe();
+            if (remark != null) AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, remark);
+            return clean;
+        }
+
+        /// <summary>The document's absolute tolerance, or 0 (weld identical positions only) when there is none.</summary>
+        private static double WeldTolerance()
+        {
+            double tolerance = DocumentTolerance();
+            return tolerance >= 0 && !double.IsInfinity(tolerance) ? tolerance : 0;
         }
     }
 }

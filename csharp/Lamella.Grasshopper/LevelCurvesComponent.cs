@@ -1,17 +1,16 @@
 using System;
 using System.Collections.Generic;
 using Grasshopper.Kernel;
+using Lamella.Conversion;
 
 namespace Lamella.Grasshopper
 {
-    /// <summary>Level Curves: the level polylines of a field, at a count of uniform levels or at given values.</summary>
+    /// <summary>Level Curves: the level polylines of a field, at a count of uniform levels or at given values; closed levels come out closed.</summary>
     public class LevelCurvesComponent : LamellaComponent
     {
-        private LevelCurves previous;
-
         public LevelCurvesComponent()
             : base("Level Curves", "Levels",
-                "The level curves of a Lamella field as polylines: a count of levels spread uniformly over the field's range, or given level values.",
+                "The level curves of a Lamella field as polylines: a count of levels spread uniformly over the field's range, or given level values. Levels that close on themselves come out as closed polylines.",
                 "LevelCurves")
         {
         }
@@ -21,7 +20,7 @@ namespace Lamella.Grasshopper
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
-            pManager.AddGenericParameter("Field", "F", "A field from Strip Field.", GH_ParamAccess.item);
+            LamellaParam<FieldGoo>.AddTo(pManager, new FieldParam(), "A field from Strip Field.");
             pManager.AddIntegerParameter("Count", "N", "Number of levels spread uniformly over the field's range, its extremes left out (a count). Ignored when Values are given. Default 10.", GH_ParamAccess.item, 10);
             pManager.AddNumberParameter("Values", "V", "Optional level values (field units), each inside the field's range; they replace Count.", GH_ParamAccess.list);
             pManager[2].Optional = true;
@@ -30,8 +29,8 @@ namespace Lamella.Grasshopper
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddGenericParameter("Curves", "C", "The level curves for Rectifying Strips.", GH_ParamAccess.item);
-            pManager.AddCurveParameter("Polylines", "P", "The level polylines (a level may give several pieces).", GH_ParamAccess.list);
+            LamellaParam<CurvesGoo>.AddTo(pManager, new CurvesParam(), "The level curves for Rectifying Strips.");
+            pManager.AddCurveParameter("Polylines", "P", "The level polylines (a level may give several pieces); closed levels are closed polylines.", GH_ParamAccess.list);
             pManager.AddNumberParameter("Levels", "L", "The level value of each polyline (field units).", GH_ParamAccess.list);
         }
 
@@ -51,18 +50,20 @@ namespace Lamella.Grasshopper
                 return;
             }
 
-            // The curves of the previous solution are replaced (downstream components receive the new ones).
-            previous?.Dispose();
-            previous = values.Count > 0
+            LevelCurves curves = Keep(DA, values.Count > 0
                 ? LevelCurves.AtLevels(field.Solver, values.ToArray(), spacing)
-                : LevelCurves.Uniform(field.Solver, count, spacing);
-            if (previous.Count == 0)
+                : LevelCurves.Uniform(field.Solver, count, spacing));
+            if (curves.Count == 0)
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, "no level crosses the surface in more than a point");
             }
-            DA.SetData(0, new CurvesGoo(new CurvesData(previous, field.ThetaDegrees)));
-            DA.SetDataList(1, RhinoConversion.Polylines(previous.Points(), previous.Offsets()));
-            DA.SetDataList(2, previous.Levels());
+            DA.SetData(0, new CurvesGoo(new CurvesData(curves, field.ThetaDegrees)));
+            DA.SetDataList(1, ClosedPolylines(curves));
+            DA.SetDataList(2, curves.Levels());
         }
+
+        /// <summary>The curves as polylines, closed ones with their first point repeated.</summary>
+        internal static List<Rhino.Geometry.PolylineCurve> ClosedPolylines(LevelCurves curves) =>
+            RhinoConversion.Polylines(Packing.CloseLoops(new Packed(curves.Points(), curves.Offsets(), 3), curves.Closed()));
     }
 }

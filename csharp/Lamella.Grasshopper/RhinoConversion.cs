@@ -1,21 +1,25 @@
 using System;
 using System.Collections.Generic;
+using System.Drawing;
 using Lamella.Conversion;
 using Rhino.Geometry;
 
 namespace Lamella.Grasshopper
 {
     /// <summary>
-    /// Rhino geometry ↔ the flat arrays of the binding. Each function only copies numbers; the array logic
-    /// (triangulating quads, cutting packed arrays, laying out flat strips) lives in Lamella.Conversion, tested on
-    /// plain arrays.
+    /// Rhino geometry ↔ the flat arrays of the binding. Each function only copies numbers; the array logic (cleaning
+    /// and triangulating meshes, closing loops, cutting packed arrays, laying out flat strips) lives in
+    /// Lamella.Conversion, tested on plain arrays.
     /// </summary>
     internal static class RhinoConversion
     {
-        /// <summary>The mesh's vertices (x, y, z each) and its faces as triangles (quads split along the shorter diagonal).</summary>
-        public static void MeshToArrays(Mesh mesh, out double[] xyz, out int[] triangles)
+        /// <summary>
+        /// A cleaned copy of the mesh for the library (see <see cref="CleanMesh"/>): vertices within
+        /// <paramref name="tolerance"/> welded, degenerate and repeated triangles and unused vertices removed, quads split.
+        /// </summary>
+        public static CleanMesh Clean(Mesh mesh, double tolerance)
         {
-            xyz = PointsToArray(mesh.Vertices.ToPoint3dArray());
+            double[] xyz = PointsToArray(mesh.Vertices.ToPoint3dArray());
             var corners = new int[4 * mesh.Faces.Count];
             for (int f = 0; f < mesh.Faces.Count; f++)
             {
@@ -25,7 +29,7 @@ namespace Lamella.Grasshopper
                 corners[4 * f + 2] = face.C;
                 corners[4 * f + 3] = face.D;
             }
-            triangles = MeshArrays.Triangulate(xyz, corners);
+            return CleanMesh.FromFaces(xyz, corners, tolerance);
         }
 
         /// <summary>The points as x, y, z each.</summary>
@@ -65,16 +69,27 @@ namespace Lamella.Grasshopper
 
         public static Point3d Point(double[] xyz, int i) => new Point3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
 
-        /// <summary>One polyline curve per item of a packed point array (x, y, z per point).</summary>
-        public static List<PolylineCurve> Polylines(double[] points, int[] offsets)
+        /// <summary>One point per three values.</summary>
+        public static List<Point3d> Points(double[] xyz)
         {
-            var curves = new List<PolylineCurve>();
-            foreach (double[] item in Packing.Unpack(new Packed(points, offsets, 3)))
-            {
-                var vertices = new List<Point3d>(item.Length / 3);
-                for (int i = 0; i < item.Length / 3; i++) vertices.Add(Point(item, i));
-                curves.Add(new PolylineCurve(vertices));
-            }
+            var points = new List<Point3d>(xyz.Length / 3);
+            for (int i = 0; i < xyz.Length / 3; i++) points.Add(Point(xyz, i));
+            return points;
+        }
+
+        /// <summary>One vector per three values.</summary>
+        public static List<Vector3d> Vectors(double[] xyz)
+        {
+            var vectors = new List<Vector3d>(xyz.Length / 3);
+            for (int i = 0; i < xyz.Length / 3; i++) vectors.Add(new Vector3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]));
+            return vectors;
+        }
+
+        /// <summary>One polyline curve per item of packed points (x, y, z per point); a closed item repeats its first point (see <see cref="Packing.CloseLoops"/>).</summary>
+        public static List<PolylineCurve> Polylines(Packed polylines)
+        {
+            var curves = new List<PolylineCurve>(polylines.Count);
+            foreach (double[] item in Packing.Unpack(polylines)) curves.Add(new PolylineCurve(Points(item)));
             return curves;
         }
 
@@ -89,12 +104,50 @@ namespace Lamella.Grasshopper
             return mesh;
         }
 
+        /// <summary>One quad mesh per strip.</summary>
+        public static List<Mesh> QuadMeshes(StripMesh[] strips)
+        {
+            var meshes = new List<Mesh>(strips.Length);
+            foreach (StripMesh strip in strips) meshes.Add(QuadMesh(strip.Vertices, strip.Quads));
+            return meshes;
+        }
+
+        /// <summary>A copy of <paramref name="mesh"/> with one colour (opaque ARGB) per vertex.</summary>
+        public static Mesh ColouredCopy(Mesh mesh, int[] argb)
+        {
+            Mesh copy = mesh.DuplicateMesh();
+            copy.VertexColors.SetColors(Array.ConvertAll(argb, Color.FromArgb));
+            return copy;
+        }
+
         /// <summary>One line per segment of six values (x0 y0 z0 x1 y1 z1).</summary>
         public static List<Line> Lines(double[] segments)
         {
             var lines = new List<Line>(segments.Length / 6);
             for (int i = 0; i < segments.Length / 6; i++) lines.Add(new Line(Point(segments, 2 * i), Point(segments, 2 * i + 1)));
             return lines;
+        }
+
+        /// <summary>The active Rhino document's model unit (e.g. "Meters"), or null without one (Rhino.Compute, Hops).</summary>
+        public static string DocumentUnits()
+        {
+            try
+            {
+                Rhino.RhinoDoc document = Rhino.RhinoDoc.ActiveDoc;
+                return document == null ? null : document.ModelUnitSystem.ToString();
+            }
+            catch (Exception)
+            {
+                return null;
+            }
+        }
+
+        /// <summary>Points given on the XY plane (x, y, z each) placed on <paramref name="plane"/> (see <see cref="StripArrays.OnPlane"/>).</summary>
+        public static double[] OnPlane(double[] xyz, Plane plane)
+        {
+            Point3d o = plane.Origin;
+            Vector3d x = plane.XAxis, y = plane.YAxis;
+            return StripArrays.OnPlane(xyz, new[] { o.X, o.Y, o.Z }, new[] { x.X, x.Y, x.Z }, new[] { y.X, y.Y, y.Z });
         }
     }
 }

@@ -4,32 +4,41 @@ using System.Globalization;
 using GH_IO.Serialization;
 using Grasshopper.Kernel;
 using Lamella.Conversion;
+using Lamella.Hosting;
 using Rhino.Geometry;
 
 namespace Lamella.Grasshopper
 {
     /// <summary>
-    /// Strip Field: a P-curve field on a mesh (paper Sec. 3), solved live. While Run is true each solution steps the
-    /// native solver a few iterations and schedules the next solution, until converged (as Kangaroo does); the
-    /// message shows the iteration and E_angle. Reset, or any change of the inputs, starts over. The session is
-    /// stored in the .gh document, so a reopened document shows its last result without solving again. The start
-    /// field is the height along Direction, or comes from traced guides (paper Eq. 5–7) or from sketched strokes,
+    /// Strip Field: a P-curve field on a mesh (paper Sec. 3), one per iteration (list item or tree branch) of its
+    /// inputs. Run solves live: each solution steps every unconverged field within a shared time budget and schedules
+    /// the next solution after a delay as long as the last cycle kept Grasshopper busy; Escape stops it until Run is
+    /// switched off and on. Solve solves to convergence within one solution (for Hops, Rhino.Compute, optimisers). A
+    /// field restarts when its own inputs change or on Reset. The document keeps each field's values, θ, parameters,
+    /// report and input signature (compressed), so a reopened document shows its fields without solving again. The
+    /// start field is the height along Direction, or comes from traced guides (paper Eq. 5–7) or from sketched strokes,
     /// whose estimated θ then replaces the θ input (Sec. 3.2.2).
     /// </summary>
     public class StripFieldComponent : LamellaComponent
     {
-        private const string SessionKey = "LamellaSession";
-        private const string SignatureKey = "LamellaSignature";
-        private const string ThetaKey = "LamellaTheta";
+        /// <summary>The description of a mesh input, shared with Trace P-Curve.</summary>
+        internal const string MeshDescription =
+            "The surface: a mesh that is a topological disk, possibly with holes. A cleaned copy is used: vertices closer than the document tolerance are welded (unwelded polysurface meshes, texture seams), degenerate and repeated faces and unused vertices are removed, quads are split (a remark says what changed). Length unit: the document's.";
 
-        private FieldSolver solver;
-        private string signature;
-        /// <summary>The θ the session solves for: the input, or the estimate from strokes.</summary>
-        private double theta;
+        private const string FieldsKey = "LamellaFields";
+        private const int PreviewLevels = 12;
+
+        private readonly FieldSessions sessions = new FieldSessions();
+        private readonly LiveSolve live = new LiveSolve(FieldStepping.StopwatchClock());
+        private int runningAtStart, converged;
+        private bool stepping;
+        /// <summary>Whether the running iteration holds a session (an error after that keeps it: it is already an output).</summary>
+        private bool hasField;
+        private string lastMessage;
 
         public StripFieldComponent()
             : base("Strip Field", "Field",
-                "A scalar field on a mesh whose level curves are pseudo-geodesics: their binormals keep the angle θ to the surface normal (paper Sec. 3). Set Run to true to solve live.",
+                "A scalar field on a mesh whose level curves are pseudo-geodesics: their binormals keep the angle θ to the surface normal (paper Sec. 3). Run solves live, Solve solves to convergence at once. One field per mesh / θ of a list or tree. The document stores each field's values (compressed, about 8 bytes per vertex), θ, parameters and report.",
                 "StripField")
         {
         }
@@ -39,40 +48,81 @@ namespace Lamella.Grasshopper
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
-            pManager.AddMeshParameter("Mesh", "M", "The surface: a mesh that is a topological disk, possibly with holes (quads are split into triangles). Length unit: the document's.", GH_ParamAccess.item);
+            pManager.AddMeshParameter("Mesh", "M", MeshDescription, GH_ParamAccess.item);
             pManager.AddNumberParameter("Theta", "θ", "Target angle between the curves' binormals and the surface normal, in degrees, 0–180 (90: geodesics, 0: asymptotic curves). Replaced by the estimate from Strokes when they are connected. Default 60.", GH_ParamAccess.item, 60.0);
             pManager.AddVectorParameter("Direction", "D", "Without Guides or Strokes, the start field is the height along this vector (unitless direction); its level curves should roughly follow the wanted strips. Default Z.", GH_ParamAccess.item, new Vector3d(0, 0, 1));
-            pManager.AddGenericParameter("Guides", "G", "Optional guides from Trace P-Curve, traced on this mesh, ordered and not crossing: the start field interpolates them (guide i on the level F = i, paper Eq. 5–7) and, when Spacing is 0, their spacing sets the gradient target. Default: none.", GH_ParamAccess.item);
+            LamellaParam<GuidesGoo>.AddTo(pManager, new GuidesParam(), "Optional guides from Trace P-Curve, traced on this mesh, ordered and not crossing: the start field interpolates them (guide i on the level F = i, paper Eq. 5–7) and, when Spacing is 0, their spacing sets the gradient target. Default: none.");
             pManager[3].Optional = true;
             pManager.AddCurveParameter("Strokes", "St", "Optional curves sketched on (or near, within a mesh edge of) the surface along the wanted strips, at least two, not crossing, in the order the family should run: the start field follows them and the θ they suggest replaces the θ input (shown in the message and the θ output). Not together with Guides. Default: none.", GH_ParamAccess.list);
             pManager[4].Optional = true;
             pManager.AddNumberParameter("Spacing", "S", "Target distance between the levels F and F + 1, in document units (the gradient norm target is 1/S); 0 keeps the start field's mean gradient. Default 0.", GH_ParamAccess.item, 0.0);
             pManager.AddNumberParameter("Weights", "W", "Advanced: three weights λ_fair, λ_grad, λ_angle (paper Eq. 12), each ≥ 0, replacing the library's warm-up schedule and defaults. Unitless. Default: none (library defaults).", GH_ParamAccess.list);
             pManager[6].Optional = true;
-            pManager.AddIntegerParameter("Iterations", "I", "Solver iterations per solution while running (a count). Default 5.", GH_ParamAccess.item, 5);
-            pManager.AddBooleanParameter("Reset", "R", "True starts the solve over from the start field. Default false.", GH_ParamAccess.item, false);
-            pManager.AddBooleanParameter("Run", "Run", "True steps the solver until it converges, one batch of iterations per solution. Default false.", GH_ParamAccess.item, false);
+            pManager.AddIntegerParameter("Max Iterations", "I", "The most solver iterations a field may run (a count, ≥ 1); live and one-shot solving stop there with a warning if not converged. Default 1000.", GH_ParamAccess.item, 1000);
+            pManager.AddBooleanParameter("Reset", "R", "True starts the fields over from their start fields. Default false.", GH_ParamAccess.item, false);
+            pManager.AddBooleanParameter("Run", "Run", "True solves live: each solution steps the fields for about " + LiveSolve.DefaultBudgetMs.ToString(CultureInfo.InvariantCulture) + " ms and schedules the next, until converged; Escape stops (switch Run off and on to continue). Default false.", GH_ParamAccess.item, false);
+            pManager.AddBooleanParameter("Solve", "Sv", "True solves each field to convergence within this solution (one-shot, for Hops, Rhino.Compute and optimisers; Escape cancels). Default false.", GH_ParamAccess.item, false);
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddGenericParameter("Field", "F", "The field (a shared native solver session) for Level Curves.", GH_ParamAccess.item);
-            pManager.AddNumberParameter("Values", "V", "The field value at each mesh vertex (field units: about 1 per Spacing).", GH_ParamAccess.list);
+            LamellaParam<FieldGoo>.AddTo(pManager, new FieldParam(), "The field (a shared native solver session) for Level Curves.");
+            pManager.AddNumberParameter("Values", "V", "The field value at each vertex of the input mesh (field units: about 1 per Spacing; NaN at vertices no face uses).", GH_ParamAccess.list);
             pManager.AddTextParameter("Report", "R", "Iterations, stage, energies (paper Eq. 6, 8, 11), angle errors, singular vertices.", GH_ParamAccess.item);
             pManager.AddNumberParameter("Angle Error", "E", "Maximum |θ_measured − θ| over the measured vertices, in degrees.", GH_ParamAccess.item);
             pManager.AddNumberParameter("Theta", "θ", "The θ being solved for, in degrees: the θ input, or the angle estimated from the Strokes.", GH_ParamAccess.item);
+            pManager.AddMeshParameter("Preview", "P", "The input mesh coloured by the field (blue: low, red: high), updated while solving.", GH_ParamAccess.item);
+            pManager.AddCurveParameter("Level Preview", "LP", "A few level curves of the current field (" + PreviewLevels.ToString(CultureInfo.InvariantCulture) + " uniform levels), updated while solving.", GH_ParamAccess.list);
+            pManager.AddPointParameter("Singular Points", "X", "The singular vertices, where level curves branch (none in a good field).", GH_ParamAccess.list);
+            pManager.AddVectorParameter("Binormals", "B", "The unit binormal of the level curve at each vertex of the input mesh (zero at boundary and singular vertices).", GH_ParamAccess.list);
         }
+
+        protected override void BeginSolution()
+        {
+            live.SolutionStarted();
+            sessions.BeginSolution();
+            converged = 0;
+            stepping = false;
+            lastMessage = null;
+            runningAtStart = sessions.RunningCount();
+        }
+
+        protected override void EndSolution()
+        {
+            // Fields of iterations this solution did not reach belong to inputs that are gone.
+            sessions.EndSolution();
+            Message = sessions.Iterations == 1 ? lastMessage : string.Format(CultureInfo.InvariantCulture, "{0} fields · {1} converged", sessions.Iterations, converged);
+            if (stepping && !live.Cancelled) ScheduleNextStep(live.NextDelayMs());
+        }
+
+        protected override void ReleaseNative() => sessions.Clear();
 
         protected override void Solve(IGH_DataAccess DA)
         {
+            hasField = false;
+            try
+            {
+                SolveField(DA);
+            }
+            finally
+            {
+                // An iteration without a field (missing or bad inputs, a failed start) releases the one it held.
+                if (!hasField) sessions.Skip(DA.Iteration);
+            }
+        }
+
+        /// <summary>One iteration; sets <see cref="hasField"/> once it holds its field's session.</summary>
+        private void SolveField(IGH_DataAccess DA)
+        {
+            int iteration = DA.Iteration;
             Mesh mesh = null;
             if (!DA.GetData(0, ref mesh) || mesh == null) return;
             double thetaDegrees = 60, spacing = 0;
             Vector3d direction = new Vector3d(0, 0, 1);
             GuidesData guides;
             var strokeCurves = new List<Curve>();
-            int iterations = 5;
-            bool reset = false, run = false;
+            int maxIterations = 1000;
+            bool reset = false, run = false, solveNow = false;
             var weights = new List<double>();
             DA.GetData(1, ref thetaDegrees);
             DA.GetData(2, ref direction);
@@ -80,66 +130,121 @@ namespace Lamella.Grasshopper
             DA.GetDataList(4, strokeCurves);
             DA.GetData(5, ref spacing);
             DA.GetDataList(6, weights);
-            DA.GetData(7, ref iterations);
+            DA.GetData(7, ref maxIterations);
             DA.GetData(8, ref reset);
             DA.GetData(9, ref run);
-            string problem = CheckInputs(spacing, weights, iterations, guides, strokeCurves);
+            DA.GetData(10, ref solveNow);
+            string problem = CheckInputs(spacing, weights, maxIterations, guides, strokeCurves);
             if (problem != null)
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Error, problem);
                 return;
             }
 
-            double[] xyz;
-            int[] triangles;
-            RhinoConversion.MeshToArrays(mesh, out xyz, out triangles);
+            CleanMesh clean = CleanMeshInput(mesh);
             List<double[]> strokes = null;
             if (strokeCurves.Count > 0)
             {
                 // Points every half edge, so that the library finds a stroke point in every triangle the stroke crosses.
-                double strokeSpacing = 0.5 * StrokeArrays.MeanEdgeLength(xyz, triangles);
+                double strokeSpacing = 0.5 * StrokeArrays.MeanEdgeLength(clean.Xyz, clean.Triangles);
                 strokes = strokeCurves.ConvertAll(curve => RhinoConversion.CurveToStroke(curve, strokeSpacing));
             }
-            string current = Signature.Of(xyz, triangles, Fingerprint(thetaDegrees, direction, spacing, weights, guides, strokes));
-            if (reset || solver == null || current != signature)
-            {
-                Restart(xyz, triangles, thetaDegrees, direction, spacing, weights, guides, strokes);
-                signature = current;
-            }
-            if (guides != null && strokes == null && guides.ThetaDegrees != theta)
+            string signature = Signature.Of(clean.Xyz, clean.Triangles, Fingerprint(thetaDegrees, direction, spacing, weights, guides, strokes));
+            FieldSession session = sessions.Session(iteration, clean.Xyz, clean.Triangles, signature, reset,
+                native => Start(native, clean, signature, thetaDegrees, direction, spacing, weights, guides, strokes));
+            hasField = true;
+            if (guides != null && strokes == null && guides.ThetaDegrees != session.ThetaDegrees)
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, string.Format(CultureInfo.InvariantCulture,
-                    "the guides were traced with θ = {0}°, the field is solved for θ = {1}°", guides.ThetaDegrees, theta));
+                    "the guides were traced with θ = {0}°, the field is solved for θ = {1}°", guides.ThetaDegrees, session.ThetaDegrees));
             }
 
-            FieldReport report = solver.Report;
-            if (run && !report.IsConverged)
-            {
-                report = solver.Step(iterations);
-                if (!report.IsConverged) ScheduleNextStep();
-            }
-            Message = (strokes != null ? string.Format(CultureInfo.InvariantCulture, "θ ≈ {0:0.#}° from strokes · ", theta) : "") +
+            if (!run) live.RunSwitchedOff();
+            // Grasshopper reports any Escape since it was last asked: forget one pressed before Run was switched on.
+            else if (live.RunSwitchedOn()) GH_Document.IsEscapeKeyDown();
+            FieldReport report = Advance(session, run, solveNow, maxIterations);
+            if (report.IsConverged) converged++;
+            lastMessage = (strokes != null ? string.Format(CultureInfo.InvariantCulture, "θ ≈ {0:0.#}° from strokes · ", session.ThetaDegrees) : "") +
                 (report.IsConverged ? "converged · " : "") +
                 string.Format(CultureInfo.InvariantCulture, "iteration {0} · E_angle {1:0.00e+0}", report.Iterations, report.EnergyAngle);
             if (report.SingularVertexCount > 0)
             {
-                AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, report.SingularVertexCount + " singular vertices: their level curves branch");
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, report.SingularVertexCount.ToString(CultureInfo.InvariantCulture) + " singular vertices: their level curves branch");
             }
 
             // The signature covers the inputs that decide θ, so the session was solved for this θ (also after a document was reopened).
-            DA.SetData(0, new FieldGoo(new FieldData(solver, theta)));
-            DA.SetDataList(1, solver.Values());
+            FieldSolver solver = session.Solver;
+            double[] values = clean.ToInputVertices(session.Values(), 1, double.NaN);
+            DA.SetData(0, new FieldGoo(new FieldData(solver, session.ThetaDegrees)));
+            DA.SetDataList(1, values);
             DA.SetData(2, report.Describe());
             DA.SetData(3, report.AngleErrorMaxDegrees);
-            DA.SetData(4, theta);
+            DA.SetData(4, session.ThetaDegrees);
+            DA.SetData(5, RhinoConversion.ColouredCopy(mesh, FieldColours.Argb(values)));
+            try
+            {
+                using (LevelCurves preview = LevelCurves.Uniform(solver, PreviewLevels, 0))
+                {
+                    DA.SetDataList(6, LevelCurvesComponent.ClosedPolylines(preview));
+                }
+            }
+            catch (LamellaException e)
+            {
+                // The preview is a view of the field; a field without usable levels still is the field.
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, "no level preview: " + e.NativeMessage);
+            }
+            var singular = new List<Point3d>();
+            foreach (int v in solver.SingularVertices()) singular.Add(RhinoConversion.Point(clean.Xyz, v));
+            DA.SetDataList(7, singular);
+            DA.SetDataList(8, RhinoConversion.Vectors(clean.ToInputVertices(solver.Binormals(), 3, 0)));
+        }
+
+        /// <summary>
+        /// Steps the field as the inputs ask: to convergence (Solve), within this solution's share of the live budget
+        /// (Run, unless Escape stopped it), or not at all; says so in messages. Returns the field's state.
+        /// </summary>
+        private FieldReport Advance(FieldSession session, bool run, bool solveNow, int maxIterations)
+        {
+            Func<bool> escape = GH_Document.IsEscapeKeyDown;
+            SteppingOutcome outcome;
+            if (solveNow)
+            {
+                outcome = session.ToConvergence(maxIterations, escape);
+                if (outcome.Stop == SteppingStop.Converged && outcome.Iterations > 0)
+                {
+                    AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, string.Format(CultureInfo.InvariantCulture,
+                        "solved in {0} iterations, {1:0} ms", outcome.Iterations, outcome.ElapsedMs));
+                }
+            }
+            else if (run && !live.Cancelled)
+            {
+                outcome = session.StepWithin(live.BudgetPerSession(runningAtStart), maxIterations, escape, FieldStepping.StopwatchClock());
+                if (outcome.Stop == SteppingStop.TimeBudget) stepping = true;
+            }
+            else
+            {
+                if (run) AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, "stopped by Escape: switch Run off and on to continue");
+                return session.Report;
+            }
+            if (outcome.Stop == SteppingStop.Cancelled)
+            {
+                live.Cancel();
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, "stopped by Escape: switch Run (or Solve) off and on to continue");
+            }
+            else if (outcome.Stop == SteppingStop.IterationCap)
+            {
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, string.Format(CultureInfo.InvariantCulture,
+                    "not converged after {0} iterations (Max Iterations); raise it, or check θ and the start field", outcome.Report.Iterations));
+            }
+            return outcome.Report;
         }
 
         /// <summary>Null when the plain inputs are usable, else what is wrong (θ, mesh, direction, guides and strokes are checked natively).</summary>
-        private static string CheckInputs(double spacing, List<double> weights, int iterations, GuidesData guides, List<Curve> strokes)
+        private static string CheckInputs(double spacing, List<double> weights, int maxIterations, GuidesData guides, List<Curve> strokes)
         {
             if (!(spacing >= 0) || double.IsInfinity(spacing)) return "Spacing must be finite and ≥ 0 (0 keeps the start field's gradient)";
             if (weights.Count != 0 && weights.Count != 3) return "Weights takes three numbers (λ_fair, λ_grad, λ_angle) or none, not " + weights.Count;
-            if (iterations < 1) return "Iterations must be at least 1";
+            if (maxIterations < 1) return "Max Iterations must be at least 1";
             if (guides != null && strokes.Count > 0) return "connect Guides or Strokes, not both: each gives a start field";
             if (strokes.Contains(null)) return "Strokes holds an empty item";
             return null;
@@ -164,75 +269,69 @@ namespace Lamella.Grasshopper
             return values.ToArray();
         }
 
-        private void Restart(double[] xyz, int[] triangles, double thetaDegrees, Vector3d direction, double spacing, List<double> weights,
-            GuidesData guides, List<double[]> strokes)
+        /// <summary>A new session on <paramref name="mesh"/> from its start field: guides, strokes or the height along Direction.</summary>
+        private static FieldSession Start(LamellaMesh mesh, CleanMesh clean, string signature, double thetaDegrees, Vector3d direction,
+            double spacing, List<double> weights, GuidesData guides, List<double[]> strokes)
         {
-            solver?.Dispose();
-            solver = null;
-            using (var mesh = LamellaMesh.FromArrays(xyz, triangles))
+            double[] start;
+            double gradientTarget = 0;
+            if (guides != null)
             {
-                double[] start;
-                double gradientTarget = 0;
-                if (guides != null)
-                {
-                    guides.Guides.CheckOrder();
-                    start = InitialField.FromGuides(mesh, guides.Guides, out gradientTarget);
-                }
-                else if (strokes != null)
-                {
-                    start = InitialField.FromStrokes(mesh, strokes, out thetaDegrees);
-                }
-                else
-                {
-                    start = StartField.Height(xyz, direction.X, direction.Y, direction.Z);
-                }
-                FieldParams parameters = FieldParams.Default(Family.PseudoGeodesic, thetaDegrees);
-                parameters.GradientTarget = spacing > 0 ? 1.0 / spacing : gradientTarget;
-                if (weights.Count == 3)
-                {
-                    parameters.WarmUp = 0;
-                    parameters.Weights = new Weights(weights[0], weights[1], weights[2]);
-                }
-                solver = new FieldSolver(mesh, start, parameters);
-                theta = thetaDegrees;
+                guides.Guides.CheckOrder();
+                start = InitialField.FromGuides(mesh, guides.Guides, out gradientTarget);
             }
+            else if (strokes != null)
+            {
+                start = InitialField.FromStrokes(mesh, strokes, out thetaDegrees);
+            }
+            else
+            {
+                start = StartField.Height(clean.Xyz, direction.X, direction.Y, direction.Z);
+            }
+            FieldParams parameters = FieldParams.Default(Family.PseudoGeodesic, thetaDegrees);
+            parameters.GradientTarget = spacing > 0 ? 1.0 / spacing : gradientTarget;
+            if (weights.Count == 3)
+            {
+                parameters.WarmUp = 0;
+                parameters.Weights = new Weights(weights[0], weights[1], weights[2]);
+            }
+            return FieldSession.Start(mesh, start, parameters, signature);
         }
 
-        private void ScheduleNextStep()
+        private void ScheduleNextStep(int delayMs)
         {
             GH_Document document = OnPingDocument();
-            document?.ScheduleSolution(1, new GH_Document.GH_ScheduleDelegate(ExpireForNextStep));
+            document?.ScheduleSolution(delayMs, new GH_Document.GH_ScheduleDelegate(ExpireForNextStep));
         }
 
         private void ExpireForNextStep(GH_Document document) => ExpireSolution(false);
 
+        /// <summary>Stores each field's values, θ, parameters, report and input signature (see <see cref="FieldArchive"/>), not the whole native session.</summary>
         public override bool Write(GH_IWriter writer)
         {
-            if (solver != null && signature != null)
+            try
             {
-                writer.SetByteArray(SessionKey, solver.Save());
-                writer.SetString(SignatureKey, signature);
-                writer.SetDouble(ThetaKey, theta);
+                byte[] bytes = sessions.Save();
+                if (bytes != null) writer.SetByteArray(FieldsKey, bytes);
+            }
+            catch (Exception)
+            {
+                // A field that cannot be read back is not stored; the document saves without it and solves again.
             }
             return base.Write(writer);
         }
 
         public override bool Read(GH_IReader reader)
         {
-            if (reader.ItemExists(SessionKey) && reader.ItemExists(SignatureKey) && reader.ItemExists(ThetaKey) && NativeSetup.EnsureLoaded() == null)
+            if (reader.ItemExists(FieldsKey))
             {
                 try
                 {
-                    solver?.Dispose();
-                    solver = FieldSolver.Load(reader.GetByteArray(SessionKey));
-                    signature = reader.GetString(SignatureKey);
-                    theta = reader.GetDouble(ThetaKey);
+                    sessions.Load(reader.GetByteArray(FieldsKey));
                 }
-                catch (LamellaException)
+                catch (FormatException)
                 {
-                    // A damaged or foreign session: solve again from the inputs.
-                    solver = null;
-                    signature = null;
+                    // Damaged or from another format version: the fields are solved again from the inputs.
                 }
             }
             return base.Read(reader);

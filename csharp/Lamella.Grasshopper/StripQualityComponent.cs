@@ -19,7 +19,7 @@ namespace Lamella.Grasshopper
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
-            pManager.AddGenericParameter("Strips", "S", "Strips from Rectifying Strips.", GH_ParamAccess.item);
+            LamellaParam<StripsGoo>.AddTo(pManager, new StripsParam(), "Strips from Rectifying Strips.");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using Grasshopper.Kernel;
+using Lamella.Conversion;
 using Rhino.Geometry;
 
 namespace Lamella.Grasshopper
@@ -11,8 +12,6 @@ namespace Lamella.Grasshopper
     /// </summary>
     public class TracePCurveComponent : LamellaComponent
     {
-        private GuideCurves previous;
-
         public TracePCurveComponent()
             : base("Trace P-Curve", "Trace",
                 "Traces P-curves on a mesh: from each start point (snapped to the nearest boundary point) a polyline whose binormals keep the angle θ to the surface normal (paper Sec. 3.2.1), until it reaches the boundary. In order, they can guide Strip Field's start field.",
@@ -25,7 +24,7 @@ namespace Lamella.Grasshopper
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
-            pManager.AddMeshParameter("Mesh", "M", "The surface: a mesh that is a topological disk, possibly with holes (quads are split into triangles). Length unit: the document's.", GH_ParamAccess.item);
+            pManager.AddMeshParameter("Mesh", "M", StripFieldComponent.MeshDescription, GH_ParamAccess.item);
             pManager.AddPointParameter("Start Points", "P", "One point per curve, each snapped to the nearest point of the mesh boundary (document units). Their order is the guides' order: guide i becomes the level F = i of Strip Field's start field.", GH_ParamAccess.list);
             pManager.AddNumberParameter("Start Angle", "α", "Angle of the start tangent against the boundary direction that has the surface on its left, turned into the surface, in degrees, strictly between 0 and 180 (90: perpendicular to the boundary). Default 90.", GH_ParamAccess.item, 90.0);
             pManager.AddNumberParameter("Theta", "θ", "Angle between the curves' binormals and the surface normal, in degrees, 0–180 (90: geodesics, 0: asymptotic curves; θ and 180 − θ are mirror images). Default 60.", GH_ParamAccess.item, 60.0);
@@ -33,7 +32,7 @@ namespace Lamella.Grasshopper
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddGenericParameter("Guides", "G", "The traced curves as guides for Strip Field (a shared native object).", GH_ParamAccess.item);
+            LamellaParam<GuidesGoo>.AddTo(pManager, new GuidesParam(), "The traced curves as guides for Strip Field (a shared native object).");
             pManager.AddCurveParameter("Polylines", "C", "The traced polylines, one per start point; their points lie on mesh edges.", GH_ParamAccess.list);
             pManager.AddTextParameter("Stops", "S", "Why each curve ended: boundary (the normal end), no candidate (no next point realises θ), length limit or point limit.", GH_ParamAccess.list);
             pManager.AddNumberParameter("Lengths", "L", "The length of each curve, in document units.", GH_ParamAccess.list);
@@ -51,20 +50,17 @@ namespace Lamella.Grasshopper
             DA.GetData(2, ref startAngle);
             DA.GetData(3, ref thetaDegrees);
 
-            double[] xyz;
-            int[] triangles;
-            RhinoConversion.MeshToArrays(mesh, out xyz, out triangles);
-            // The curves of the previous solution are replaced (downstream components receive the new ones).
-            previous?.Dispose();
-            previous = null;
+            CleanMesh clean = CleanMeshInput(mesh);
+            double[] xyz = clean.Xyz;
             var starts = new EdgePoint[points.Count];
-            using (var native = LamellaMesh.FromArrays(xyz, triangles))
+            GuideCurves guides;
+            using (var native = LamellaMesh.FromArrays(xyz, clean.Triangles))
             {
                 for (int i = 0; i < starts.Length; i++) starts[i] = BoundaryStarts.Nearest(native, points[i].X, points[i].Y, points[i].Z);
-                previous = GuideCurves.Trace(native, starts, thetaDegrees, startAngle);
+                guides = Keep(DA, GuideCurves.Trace(native, starts, thetaDegrees, startAngle));
             }
 
-            TraceStop[] stops = previous.Stops();
+            TraceStop[] stops = guides.Stops();
             var stopNames = new List<string>(stops.Length);
             for (int i = 0; i < stops.Length; i++)
             {
@@ -77,12 +73,12 @@ namespace Lamella.Grasshopper
             var snapped = new List<Point3d>(starts.Length);
             foreach (EdgePoint start in starts) snapped.Add(RhinoConversion.Point(start.Position(xyz), 0));
             var crossings = new List<Point3d>();
-            foreach (Crossing crossing in previous.Crossings()) crossings.Add(RhinoConversion.Point(crossing.Position, 0));
+            foreach (Crossing crossing in guides.Crossings()) crossings.Add(RhinoConversion.Point(crossing.Position, 0));
             if (starts.Length > 1)
             {
                 try
                 {
-                    previous.CheckOrder();
+                    guides.CheckOrder();
                 }
                 catch (LamellaException e)
                 {
@@ -90,10 +86,10 @@ namespace Lamella.Grasshopper
                 }
             }
 
-            DA.SetData(0, new GuidesGoo(new GuidesData(previous, thetaDegrees)));
-            DA.SetDataList(1, RhinoConversion.Polylines(previous.Points(), previous.Offsets()));
+            DA.SetData(0, new GuidesGoo(new GuidesData(guides, thetaDegrees)));
+            DA.SetDataList(1, RhinoConversion.Polylines(new Packed(guides.Points(), guides.Offsets(), 3)));
             DA.SetDataList(2, stopNames);
-            DA.SetDataList(3, previous.Lengths());
+            DA.SetDataList(3, guides.Lengths());
             DA.SetDataList(4, snapped);
             DA.SetDataList(5, crossings);
         }

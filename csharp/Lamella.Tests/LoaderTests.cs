@@ -44,7 +44,32 @@ namespace Lamella.Tests
         [Test]
         public void FileNameFollowsThePlatform()
         {
-            Assert.AreEqual(Environment.OSVersion.Platform == PlatformID.Win32NT ? "lamella.dll" : "liblamella.so", NativeLibraryLoader.FileName);
+            Assert.AreEqual(Environment.OSVersion.Platform == PlatformID.Win32NT ? "lamella_native.dll" : "liblamella_native.so", NativeLibraryLoader.FileName);
+            Assert.AreEqual("lamella_native.dll", NativeLibraryLoader.FileNameOn(NativePlatform.Windows));
+            Assert.AreEqual("liblamella_native.dylib", NativeLibraryLoader.FileNameOn(NativePlatform.MacOS));
+            Assert.AreEqual("liblamella_native.so", NativeLibraryLoader.FileNameOn(NativePlatform.Linux));
+        }
+
+        /// <summary>
+        /// Windows and the default macOS file systems ignore case: the native library must not share a file name with any
+        /// managed assembly that sits in the same folder (Lamella.dll, Lamella.Grasshopper.gha), or one overwrites the
+        /// other and [DllImport] may bind to the managed module.
+        /// </summary>
+        [Test]
+        public void NativeFileNamesDifferFromTheManagedOnesIgnoringCase()
+        {
+            string managed = typeof(LamellaMesh).Assembly.GetName().Name;
+            Assert.AreEqual("Lamella", managed);
+            foreach (NativePlatform platform in Enum.GetValues(typeof(NativePlatform)))
+            {
+                string native = NativeLibraryLoader.FileNameOn(platform);
+                foreach (string file in new[] { managed + ".dll", "Lamella.Grasshopper.gha", "Lamella.Grasshopper.dll" })
+                {
+                    Assert.IsFalse(string.Equals(native, file, StringComparison.OrdinalIgnoreCase), native + " vs " + file);
+                    Assert.IsFalse(string.Equals(Path.GetFileNameWithoutExtension(native), Path.GetFileNameWithoutExtension(file), StringComparison.OrdinalIgnoreCase),
+                        "a DllImport by base name could resolve " + native + " to " + file);
+                }
+            }
         }
     }
 }

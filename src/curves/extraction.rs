@@ -154,7 +154,7 @@ impl<'a> LevelSlicer<'a> {
         // Crossed edges have values on both sides of the level, so fa != fb.
         let t = ((self.level - fa) / (fb - fa)).clamp(0.0, 1.0);
         let (pa, pb) = (self.mesh.positions()[a as usize], self.mesh.positions()[b as usize]);
-        let (na, nb) = (self.mesh.vertex_normals()[a as usize], self.mesh.vertex_normals()[b as usize]);
+        let (na, nb) = (self.mesh.smooth_normals()[a as usize], self.mesh.smooth_normals()[b as usize]);
         (pa + (pb - pa) * t, (na + (nb - na) * t).try_normalize(0.0).unwrap_or(na))
     }
 

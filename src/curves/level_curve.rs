@@ -11,7 +11,8 @@ pub struct LevelCurve {
     pub level: f64,
     /// The polyline's vertices (a closed curve does not repeat its first vertex).
     pub points: Vec<Vec3>,
-    /// Unit surface normal per vertex, interpolated linearly from the mesh's vertex normals.
+    /// Unit surface normal per vertex, interpolated linearly from the mesh's smooth (second-order)
+    /// vertex normals, [`crate::mesh::TriMesh::smooth_normals`].
     pub normals: Vec<Vec3>,
     /// Whether the polyline closes on itself (a level set that never meets the boundary).
     pub closed: bool,

@@ -7,8 +7,8 @@
 //! reach the caller. Raw pointers are touched only in [`raw`]. The few functions that return a
 //! value rather than a status (versions, status names, the error message) cannot fail or panic.
 //!
-//! The ABI covers the whole pipeline: meshes ([`LmlMesh`]), field solver sessions
-//! ([`LmlField`]), level curves ([`LmlCurves`]) and rectifying strips with their unrollings and
+//! The ABI covers the whole pipeline: meshes ([`LmlMesh`]), the default start search
+//! ([`LmlSearch`]), field solver sessions ([`LmlField`]), level curves ([`LmlCurves`]) and rectifying strips with their unrollings and
 //! metrics ([`LmlStrips`]), each a handle module with `lml_<handle>_new` / `_free` and two-call
 //! array outputs, and the initialisation of Sec. 3.2.2: boundary start points, traced guide
 //! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes.
@@ -35,6 +35,7 @@ mod mesh;
 mod field_params;
 mod report;
 mod field;
+mod search;
 mod session;
 mod curves;
 mod strip_params;
@@ -58,6 +59,7 @@ pub use last_error::lml_last_error_message;
 pub use live_handles::lml_debug_live_handles;
 pub use mesh::*;
 pub use report::*;
+pub use search::*;
 pub use session::*;
 pub use status::*;
 pub use strip_metrics::*;

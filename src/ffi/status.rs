@@ -2,9 +2,10 @@
 
 use std::ffi::c_char;
 
-/// Result of an `lml_*` call. `LML_STATUS_OK`, `LML_STATUS_MORE` and `LML_STATUS_CONVERGED`
-/// are successes (≥ 0); every failure is negative, and `lml_last_error_message()` then says
-/// what went wrong and names the offending element (vertex, face, byte offset, argument).
+/// Result of an `lml_*` call. `LML_STATUS_OK`, `LML_STATUS_MORE`, `LML_STATUS_CONVERGED` and
+/// `LML_STATUS_NO_ACCEPTABLE_FAMILY` are successes (≥ 0: the outputs are valid); every failure
+/// is negative, and `lml_last_error_message()` then says what went wrong and names the
+/// offending element (vertex, face, byte offset, argument).
 #[repr(i32)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum LmlStatus {
@@ -14,6 +15,11 @@ pub enum LmlStatus {
     More = 1,
     /// `lml_field_step` / `lml_field_solve`: the optimisation has converged; further steps do nothing.
     Converged = 2,
+    /// `lml_strips_new`: the strips were built (the handle is valid) but miss the target angle
+    /// by more than the tolerance somewhere, or have flipped quads: no acceptable family.
+    /// `lml_last_error_message()` names the strips and the worst point and says what to try;
+    /// `lml_strips_verdict` gives the numbers.
+    NoAcceptableFamily = 3,
     /// A NULL or misaligned pointer, a wrong array length, a non-finite or out-of-range
     /// parameter, an unreadable file.
     InvalidArgument = -1,
@@ -46,10 +52,11 @@ pub enum LmlStatus {
 }
 
 impl LmlStatus {
-    const ALL: [LmlStatus; 13] = [
+    const ALL: [LmlStatus; 14] = [
         LmlStatus::Ok,
         LmlStatus::More,
         LmlStatus::Converged,
+        LmlStatus::NoAcceptableFamily,
         LmlStatus::InvalidArgument,
         LmlStatus::InvalidMesh,
         LmlStatus::NotADisk,
@@ -68,6 +75,7 @@ impl LmlStatus {
             LmlStatus::Ok => c"LML_STATUS_OK",
             LmlStatus::More => c"LML_STATUS_MORE",
             LmlStatus::Converged => c"LML_STATUS_CONVERGED",
+            LmlStatus::NoAcceptableFamily => c"LML_STATUS_NO_ACCEPTABLE_FAMILY",
             LmlStatus::InvalidArgument => c"LML_STATUS_INVALID_ARGUMENT",
             LmlStatus::InvalidMesh => c"LML_STATUS_INVALID_MESH",
             LmlStatus::NotADisk => c"LML_STATUS_NOT_A_DISK",

@@ -1,7 +1,7 @@
 //! The quality measures of paper Table 4 per strip and per pattern, and the strip warnings as
 //! bit flags, as plain C structs.
 
-use crate::strips::{PatternMetrics, RectifyingStrip, SkippedCurve, StripWarning};
+use crate::strips::{PatternMetrics, RectifyingStrip, SkippedCurve, StripWarning, Verdict, WorstQuad};
 
 /// A set of `LML_STRIP_WARNING_*` bits.
 pub type LmlStripWarnings = u64;
@@ -72,6 +72,12 @@ pub struct LmlStripMetrics {
     pub flipped_quads: u64,
     /// The strip's `LML_STRIP_WARNING_*` bits (0: none).
     pub warnings: LmlStripWarnings,
+    /// Max over the quads of the error of the strip plane's angle: the in-plane direction across
+    /// the centre line against the smooth surface normal (the quad normal should make 90° − θ
+    /// with it); defined where the centre line is straight too. What the verdict judges.
+    pub max_quad_angle_error_degrees: f64,
+    /// The longest ruling segment from the centre line to a boundary, over the strip width.
+    pub max_ruling_over_width: f64,
 }
 
 impl From<&RectifyingStrip> for LmlStripMetrics {
@@ -88,6 +94,8 @@ impl From<&RectifyingStrip> for LmlStripMetrics {
             appro_percent: m.appro_percent,
             flipped_quads: count(m.flipped_quads),
             warnings: warning_bits(&s.warnings),
+            max_quad_angle_error_degrees: m.max_quad_angle_error_degrees,
+            max_ruling_over_width: m.max_ruling_over_width,
         }
     }
 }
@@ -107,6 +115,10 @@ pub struct LmlPatternMetrics {
     pub max_planar: f64,
     pub appro_percent: f64,
     pub flipped_quads: u64,
+    /// Max over all strips of `LmlStripMetrics::max_quad_angle_error_degrees`.
+    pub max_quad_angle_error_degrees: f64,
+    /// Max over all strips of `LmlStripMetrics::max_ruling_over_width`.
+    pub max_ruling_over_width: f64,
 }
 
 impl LmlPatternMetrics {
@@ -120,6 +132,43 @@ impl LmlPatternMetrics {
             max_planar: m.max_planar,
             appro_percent: m.appro_percent,
             flipped_quads: count(m.flipped_quads),
+            max_quad_angle_error_degrees: m.max_quad_angle_error_degrees,
+            max_ruling_over_width: m.max_ruling_over_width,
+        }
+    }
+}
+
+/// The verdict on a strip pattern (see `lml_strips_verdict`). Angles in degrees.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LmlVerdict {
+    /// 1 when every strip is within the tolerance of θ and no quad is flipped (and at least one
+    /// strip was built), 0 otherwise.
+    pub acceptable: u64,
+    pub tolerance_degrees: f64,
+    /// Strips with a quad more than the tolerance off θ.
+    pub strips_missing_theta: u64,
+    /// Strips with flipped quads.
+    pub strips_with_flipped_quads: u64,
+    /// The quad that misses θ most: its strip, its index along the strip, its centre and error.
+    pub worst_strip: u64,
+    pub worst_quad: u64,
+    pub worst_point: [f64; 3],
+    pub worst_error_degrees: f64,
+}
+
+impl From<&Verdict> for LmlVerdict {
+    fn from(v: &Verdict) -> LmlVerdict {
+        let worst = v.worst.unwrap_or(WorstQuad { strip: 0, quad: 0, point: [0.0; 3], error_degrees: 0.0 });
+        LmlVerdict {
+            acceptable: u64::from(v.is_acceptable()),
+            tolerance_degrees: v.tolerance_degrees,
+            strips_missing_theta: count(v.strips_missing_theta.len()),
+            strips_with_flipped_quads: count(v.strips_with_flipped_quads.len()),
+            worst_strip: count(worst.strip),
+            worst_quad: count(worst.quad),
+            worst_point: worst.point,
+            worst_error_degrees: worst.error_degrees,
         }
     }
 }

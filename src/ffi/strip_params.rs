@@ -59,6 +59,9 @@ pub struct LmlStripParams {
     pub theta_degrees: f64,
     /// Width of the flat strip (distance between its two straight boundaries), finite and > 0.
     pub width: f64,
+    /// Largest angle error in degrees, in (0, 180), of a quad of an acceptable pattern: beyond it
+    /// (or with flipped quads) `lml_strips_new` returns `LML_STATUS_NO_ACCEPTABLE_FAMILY`. Default 2.
+    pub tolerance_degrees: f64,
     pub weights: LmlStripWeights,
 }
 
@@ -92,6 +95,7 @@ impl LmlStripParams {
             iterations_per_round: count(self.iterations_per_round),
             final_iterations: count(self.final_iterations),
             polish_iterations: count(self.polish_iterations),
+            tolerance_degrees: self.tolerance_degrees,
         }
     }
 }
@@ -125,6 +129,7 @@ pub unsafe extern "C" fn lml_strip_params_default(theta_degrees: f64, width: f64
             polish_iterations: count_u32(defaults.polish_iterations),
             theta_degrees,
             width,
+            tolerance_degrees: defaults.tolerance_degrees,
             weights: defaults.weights.into(),
         });
         Ok(LmlStatus::Ok)

@@ -7,7 +7,8 @@ use super::guard::guarded;
 use super::layout::{flat_xy, flat_xyz, offsets};
 use super::raw::{copy_out, handle, release, Out};
 use super::status::LmlStatus;
-use super::strip_metrics::{LmlPatternMetrics, LmlSkippedCurve, LmlStripMetrics};
+use super::last_error::set_last_error;
+use super::strip_metrics::{LmlPatternMetrics, LmlSkippedCurve, LmlStripMetrics, LmlVerdict};
 use super::strip_params::LmlStripParams;
 use crate::strips::{rectifying_strips, RectifyingStrip, StripPattern};
 
@@ -39,9 +40,14 @@ pub struct LmlStrips {
 /// A polyline that cannot carry a strip (fewer than 3 points, a zero-length segment, a failed
 /// optimisation) does not fail the call: it is listed by `lml_strips_skipped`.
 ///
-/// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer; width not finite or
-/// ≤ 0, θ outside [0, 180], a weight negative or not finite, an iteration count above
-/// `LML_MAX_STRIP_ROUNDS` / `LML_MAX_STRIP_ITERATIONS` (the parameter is named)).
+/// Returns `LML_STATUS_OK` (every strip's plane within `params->tolerance_degrees` of θ, no
+/// flipped quad); `LML_STATUS_NO_ACCEPTABLE_FAMILY` (the strips are built and `*out` is valid,
+/// but some miss θ by more than the tolerance or have flipped quads, or no strip could be
+/// built: `lml_last_error_message()` names the strips and the worst point and what to try,
+/// `lml_strips_verdict` gives the numbers); `LML_STATUS_INVALID_ARGUMENT` (NULL pointer; width
+/// not finite or ≤ 0, θ outside [0, 180], tolerance outside (0, 180), a weight negative or not
+/// finite, an iteration count above `LML_MAX_STRIP_ROUNDS` / `LML_MAX_STRIP_ITERATIONS` (the
+/// parameter is named)).
 #[no_mangle]
 pub unsafe extern "C" fn lml_strips_new(curves: *const LmlCurves, params: *const LmlStripParams, out: *mut *mut LmlStrips) -> LmlStatus {
     guarded(|| {
@@ -50,8 +56,15 @@ pub unsafe extern "C" fn lml_strips_new(curves: *const LmlCurves, params: *const
         out.set(std::ptr::null_mut());
         let curves = unsafe { handle(curves, "curves") }?;
         let params = unsafe { handle(params, "params") }?.to_params();
-        out.set_owned(LmlStrips { pattern: rectifying_strips(&curves.mesh, &curves.curves, &params)? });
-        Ok(LmlStatus::Ok)
+        let pattern = rectifying_strips(&curves.mesh, &curves.curves, &params)?;
+        let status = if pattern.verdict.is_acceptable() {
+            LmlStatus::Ok
+        } else {
+            set_last_error(&pattern.verdict.message());
+            LmlStatus::NoAcceptableFamily
+        };
+        out.set_owned(LmlStrips { pattern });
+        Ok(status)
     })
 }
 
@@ -63,6 +76,19 @@ pub unsafe extern "C" fn lml_strips_free(strips: *mut LmlStrips) {
         unsafe { release(strips) };
         Ok(LmlStatus::Ok)
     });
+}
+
+/// Writes the verdict on the strips to `*verdict`: whether they meet θ within the tolerance they
+/// were built with, without flipped quads, and where they miss most.
+/// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+#[no_mangle]
+pub unsafe extern "C" fn lml_strips_verdict(strips: *const LmlStrips, verdict: *mut LmlVerdict) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle, writable `verdict`.
+        let strips = unsafe { handle(strips, "strips") }?;
+        unsafe { Out::new(verdict, "verdict") }?.set(LmlVerdict::from(&strips.pattern.verdict));
+        Ok(LmlStatus::Ok)
+    })
 }
 
 /// Writes the number of strips `s` to `*count`.

@@ -1,13 +1,13 @@
 //! The stepwise field optimiser (Sec. 3.2.2): create it, `step` it a few iterations at a
 //! time, read the field and the binormals in between, change the weights, continue.
 
-use super::darboux::{level_frame, LevelFrame};
+use super::darboux::LevelFrame;
 use super::error::FieldError;
 use super::failure_site::largest_residual_vertices;
 use super::gradient_norm::mean_gradient_norm;
 use super::params::{Family, FieldParams, Weights, SETTLED_CURVE_ENERGY, SETTLING_ITERATIONS};
 use super::problem::FieldProblem;
-use super::report::{curve_energy, level_frames, Evaluated, StepReport};
+use super::report::{curve_energy, problem_frames, Evaluated, StepReport};
 use crate::mesh::{TriMesh, Vec3};
 use crate::solver::{LeastSquaresProblem, LevenbergMarquardt, LmOptions, SolverError};
 
@@ -44,15 +44,18 @@ pub struct FieldSolver {
     pub(super) iterations: usize,
     pub(super) converged: bool,
     pub(super) last_report: StepReport,
-    /// Level frames at the interior vertices for the current field values (`None` once the
+    /// Level frames at the curve vertices for the current field values (`None` once the
     /// field has moved): measured for the report, reused by the next orientation test.
     frames: Option<Vec<Option<LevelFrame>>>,
 }
 
 impl FieldSolver {
     /// Prepares the optimisation of `initial_field` (one value per vertex) on `mesh`.
-    pub fn new(mesh: &TriMesh, initial_field: &[f64], params: FieldParams) -> Result<FieldSolver, FieldError> {
+    /// The family is taken by name ([`super::Family::by_name`]): a pseudo-geodesic angle of 0°,
+    /// 90° or 180° optimises the asymptotic or geodesic energy of Eq. 13.
+    pub fn new(mesh: &TriMesh, initial_field: &[f64], mut params: FieldParams) -> Result<FieldSolver, FieldError> {
         validate_params(&params)?;
+        params.family = params.family.by_name();
         validate_field(mesh, initial_field)?;
         let (unit_mesh, length_scale) = mesh.unit_scaled();
         let gradient = mean_gradient_norm(&unit_mesh, initial_field);
@@ -68,6 +71,39 @@ impl FieldSolver {
         solver.initialize_auxiliaries();
         solver.last_report = solver.measure(0, 0, None);
         Ok(solver)
+    }
+
+    /// Starts over from `initial_field` with `params` (same family; schedule, weights, gradient
+    /// target and tolerances may differ), keeping the prepared problem and the solver's symbolic
+    /// analysis: what trying many starts on one mesh needs (see
+    /// [`crate::initialisation::StartSearch`]). Errors as [`Self::new`], and
+    /// `InvalidParameter { name: "family" }` for another family.
+    pub fn restart(&mut self, initial_field: &[f64], mut params: FieldParams) -> Result<(), FieldError> {
+        validate_params(&params)?;
+        params.family = params.family.by_name();
+        if params.family != self.problem.family() {
+            return Err(FieldError::InvalidParameter { name: "family", message: "a restart keeps the solver's family".into() });
+        }
+        validate_field(self.problem.mesh(), initial_field)?;
+        let gradient = mean_gradient_norm(self.problem.mesh(), initial_field);
+        if !(gradient > 0.0 && gradient.is_finite()) {
+            return Err(FieldError::ConstantField);
+        }
+        let field_scale = 1.0 / gradient;
+        let length = self.scales.length;
+        self.problem.set_gradient_target(params.gradient_target.map_or(1.0, |r| r * field_scale / length));
+        self.scales = Scales { field: field_scale, length };
+        self.params = params;
+        self.x.iter_mut().for_each(|x| *x = 0.0);
+        for (x, f) in self.x.iter_mut().zip(initial_field) {
+            *x = f * field_scale;
+        }
+        self.iterations = 0;
+        self.frames = None;
+        self.enter_stage(0);
+        self.initialize_auxiliaries();
+        self.last_report = self.measure(0, 0, None);
+        Ok(())
     }
 
     /// A solver in its first stage with all variables zero, on an already unit-scaled mesh.
@@ -160,7 +196,7 @@ impl FieldSolver {
     /// binormal of the level polyline otherwise; zero at boundary and singular vertices
     /// and where the level polyline is straight.
     pub fn binormals(&self) -> Vec<Vec3> {
-        self.per_interior_vertex(|solver, k, frame| match solver.problem.family() {
+        self.per_curve_vertex(|solver, k, frame| match solver.problem.family() {
             Family::PseudoGeodesic { .. } => solver.auxiliary(k, 0).try_normalize(0.0),
             Family::Geodesic | Family::Asymptotic => frame.binormal,
         })
@@ -168,7 +204,7 @@ impl FieldSolver {
 
     /// Unit side vector `u` of the Darboux frame per vertex (Eq. 10); zero at boundary and singular vertices.
     pub fn side_vectors(&self) -> Vec<Vec3> {
-        self.per_interior_vertex(|solver, k, frame| match solver.problem.family() {
+        self.per_curve_vertex(|solver, k, frame| match solver.problem.family() {
             Family::PseudoGeodesic { .. } => solver.auxiliary(k, 3).try_normalize(0.0),
             Family::Geodesic | Family::Asymptotic => Some(frame.side),
         })
@@ -183,8 +219,8 @@ impl FieldSolver {
         Ok(())
     }
 
-    /// Gives each interior vertex its own target angle (degrees, one per entry of the problem's
-    /// `interior`, validated by the caller) and restarts the convergence test: the energy changed.
+    /// Gives each curve vertex its own target angle (degrees, one per entry of the problem's
+    /// `curve_vertices`, validated by the caller) and restarts the convergence test: the energy changed.
     pub(super) fn retarget(&mut self, degrees: &[f64]) {
         self.problem.set_vertex_targets(degrees);
         self.slow_iterations = 0;
@@ -214,10 +250,6 @@ impl FieldSolver {
         self.problem.mesh().vertex_count()
     }
 
-    pub(super) fn internal_field(&self) -> &[f64] {
-        &self.x[..self.vertex_count()]
-    }
-
     fn auxiliary(&self, k: usize, offset: usize) -> Vec3 {
         let start = self.problem.auxiliary_start(k) + offset;
         Vec3::new(self.x[start], self.x[start + 1], self.x[start + 2])
@@ -228,12 +260,12 @@ impl FieldSolver {
         self.x[start..start + 3].copy_from_slice(value.as_slice());
     }
 
-    /// `value(self, k, frame)` at each regular interior vertex (the `k`-th, with its level frame);
+    /// `value(self, k, frame)` at each regular curve vertex (the `k`-th, with its level frame);
     /// zero elsewhere.
-    fn per_interior_vertex(&self, value: impl Fn(&Self, usize, &LevelFrame) -> Option<Vec3>) -> Vec<Vec3> {
+    fn per_curve_vertex(&self, value: impl Fn(&Self, usize, &LevelFrame) -> Option<Vec3>) -> Vec<Vec3> {
         let mut out = vec![Vec3::zeros(); self.vertex_count()];
-        for (k, &v) in self.problem.interior().iter().enumerate() {
-            if let Some(frame) = level_frame(self.problem.mesh(), self.internal_field(), v as usize) {
+        for (k, &v) in self.problem.curve_vertices().iter().enumerate() {
+            if let Some(frame) = self.problem.level_frame(k, &self.x) {
                 out[v as usize] = value(self, k, &frame).unwrap_or_else(Vec3::zeros);
             }
         }
@@ -255,10 +287,10 @@ impl FieldSolver {
     fn initialize_auxiliaries(&mut self) {
         let Family::PseudoGeodesic { theta_degrees } = self.problem.family() else { return };
         let (sin, cos) = theta_degrees.to_radians().sin_cos();
-        for k in 0..self.problem.interior().len() {
-            let v = self.problem.interior()[k] as usize;
-            let normal = self.problem.mesh().vertex_normals()[v];
-            let (b, u) = match level_frame(self.problem.mesh(), self.internal_field(), v) {
+        for k in 0..self.problem.curve_vertices().len() {
+            let v = self.problem.curve_vertices()[k] as usize;
+            let normal = self.problem.mesh().smooth_normals()[v];
+            let (b, u) = match self.problem.level_frame(k, &self.x) {
                 Some(frame) => (frame.binormal.unwrap_or(normal * cos + frame.side * sin), frame.side),
                 None => (normal, any_tangent(&normal)),
             };
@@ -289,11 +321,11 @@ impl FieldSolver {
         flips
     }
 
-    /// The level frames of the current field at the interior vertices, measured (in parallel)
+    /// The level frames of the current field at the curve vertices, measured (in parallel)
     /// unless kept from the last measurement.
     fn take_frames(&mut self) -> Vec<Option<LevelFrame>> {
         let frames = self.frames.take();
-        frames.unwrap_or_else(|| level_frames(self.problem.mesh(), self.internal_field(), self.problem.interior()))
+        frames.unwrap_or_else(|| problem_frames(&self.problem, &self.x))
     }
 
     /// Whether the unweighted curve terms at x ([`curve_energy`]) have fallen to

@@ -13,12 +13,12 @@ mod geodesic;
 mod gradient_norm;
 pub mod hessian_energy;
 mod level_angles;
+mod level_jet;
 mod params;
 mod problem;
 mod pseudo_geodesic;
 mod report;
 mod session;
-mod star_chords;
 mod varying_angle;
 
 pub use angle_profile::AngleProfile;

@@ -1,5 +1,6 @@
 //! `E_angle`, the pseudo-geodesic angle energy of Eq. 8 (to a target angle `θ_v` per vertex), with the auxiliary unit binormal
-//! `b` (Eq. 9) and side vector `u` (Eq. 10) of each interior vertex.
+//! `b` (Eq. 9) and side vector `u` (Eq. 10) of each curve vertex, on the chords of its level jet
+//! ([`super::level_jet`]: `e_p = v0 − p̃`, `e_q = v0 − q̃`, tangent `t`, normal `n` of the local quadric).
 //!
 //! Rows per regular vertex, all scaled by `√(λ_angle · A_v)` (A normalised to mean 1):
 //!
@@ -9,18 +10,18 @@
 //! | 1 | `(b·n)(b·u) − sinθ cosθ` | Eq. 8, second term: the *signed* angle, telling the two osculating planes of Fig. 8 apart |
 //! | 2, 3 | `b·ê_p`, `b·ê_q` with `ê = e/‖e‖`, `e_p = v0 − p`, `e_q = v0 − q` | Eq. 9 |
 //! | 4 | `b·b − 1` | Eq. 9 |
-//! | 5 | `u·t̂` with `t̂ = (q − p)/‖q − p‖` | Eq. 10 |
+//! | 5 | `u·t` with `t` the unit tangent (`∥ q̃ − p̃`) | Eq. 10 |
 //! | 6, 7 | `u·n`, `u·u − 1` | Eq. 10 |
 //!
 //! Rows 2, 3 and 5 use normalised chords with their exact derivatives (no frozen norms).
-//! Singular vertices (see [`super::crossing`]) get zero rows.
+//! Singular vertices get zero rows (the caller does not evaluate them).
 
-use super::star_chords::clear_rows_at_vertex;
-use crate::mesh::{TriMesh, Vec3};
+use super::level_jet::{JetStencil, LevelJet};
+use crate::mesh::Vec3;
 
-/// Residual rows per interior vertex.
+/// Residual rows per curve vertex.
 pub(crate) const ROWS: usize = 8;
-/// Auxiliary variables per interior vertex: `b` then `u`.
+/// Auxiliary variables per curve vertex: `b` then `u`.
 pub(crate) const AUXILIARIES: usize = 6;
 
 /// The target angle `θ_v` between binormal and surface normal at one vertex, in degrees and as
@@ -40,25 +41,21 @@ impl TargetAngle {
     }
 }
 
-/// Evaluates the rows of vertex `v`. `aux = [b, u]`; `jacobian` (if any) is row-major with
-/// `columns` columns: field columns `0..=ring` (centre first, then the ring), auxiliaries from `aux_column`.
-#[allow(clippy::too_many_arguments)]
+/// Evaluates the rows of a regular curve vertex with level jet `chords`. `aux = [b, u]`;
+/// `residuals` and `jacobian` (if any) come zeroed; the Jacobian is row-major with one column
+/// per stencil vertex, then the six auxiliaries.
 pub(crate) fn evaluate(
-    mesh: &TriMesh,
-    field: &[f64],
-    v: usize,
+    chords: &LevelJet,
+    stencil: &JetStencil,
     aux: &[f64],
     target: TargetAngle,
     scale: f64,
     residuals: &mut [f64],
-    mut jacobian: Option<&mut [f64]>,
-    aux_column: usize,
+    jacobian: Option<&mut [f64]>,
 ) {
+    let aux_column = stencil.vertices.len();
     let columns = aux_column + AUXILIARIES;
-    let Some(chords) = clear_rows_at_vertex(mesh, field, v, residuals, &mut jacobian) else {
-        return;
-    };
-    let n = mesh.vertex_normals()[v];
+    let n = chords.normal;
     let b = Vec3::new(aux[0], aux[1], aux[2]);
     let u = Vec3::new(aux[3], aux[4], aux[5]);
     let (bn, bu) = (b.dot(&n), b.dot(&u));
@@ -92,7 +89,7 @@ pub(crate) fn evaluate(
     set(5, uc, t);
     set(6, uc, n);
     set(7, uc, u * 2.0);
-    chords.to_p.add_normalized_dot_partials(&b, scale, &mut jac[2 * columns..3 * columns]);
-    chords.to_q.add_normalized_dot_partials(&b, scale, &mut jac[3 * columns..4 * columns]);
-    chords.tangent.add_normalized_dot_partials(&u, scale, &mut jac[5 * columns..6 * columns]);
+    chords.to_p.add_normalized_dot_partials(stencil, &b, scale, &mut jac[2 * columns..3 * columns]);
+    chords.to_q.add_normalized_dot_partials(stencil, &b, scale, &mut jac[3 * columns..4 * columns]);
+    chords.tangent.add_normalized_dot_partials(stencil, &u, scale, &mut jac[5 * columns..6 * columns]);
 }

@@ -1,9 +1,8 @@
 //! What a field optimisation reports after each call to `step`.
 
-use super::darboux::{level_frame, LevelFrame};
+use super::darboux::LevelFrame;
 use super::params::{Family, Weights};
 use super::problem::{Block, FieldProblem};
-use crate::mesh::TriMesh;
 use crate::solver::LeastSquaresProblem;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -12,7 +11,8 @@ use serde::{Deserialize, Serialize};
 /// initial mean `‖∇F‖` 1), and the weighted total the solver minimises.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Energies {
-    /// `E_fair`, Eq. 6.
+    /// `E_fair`: the squared Hessian energy of Eq. 6 plus the local-fit term (see
+    /// [`super::problem`], `FIT_RATIO`).
     pub fair: f64,
     /// `E_grad`, Eq. 11 (residual `‖∇F‖² − r²`).
     pub grad: f64,
@@ -34,7 +34,7 @@ pub struct StepReport {
     /// Index of the weight stage in force (`schedule.len()` for the final weights).
     pub stage: usize,
     pub energies: Energies,
-    /// RMS and maximum of `|θ_measured − θ_v|` in degrees (`θ_v` the vertex's target) over regular interior vertices
+    /// RMS and maximum of `|θ_measured − θ_v|` in degrees (`θ_v` the vertex's target) over regular curve vertices
     /// with a defined binormal, measured from the field's own level polylines.
     pub angle_error_rms_degrees: f64,
     pub angle_error_max_degrees: f64,
@@ -53,16 +53,16 @@ pub struct StepReport {
 impl StepReport {
     /// Measures energies, angle errors and singular vertices of `x` (variables of `problem`).
     /// `evaluated` holds residuals the solver already evaluated at `x`, if any (see
-    /// [`Evaluated`]); `frames` are the [`level_frames`] of `x` at the problem's interior vertices.
+    /// [`Evaluated`]); `frames` are the [`problem_frames`] of `x`.
     pub(crate) fn measure(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>, frames: &[Option<LevelFrame>]) -> StepReport {
         let mut report = StepReport { energies: energies(problem, x, evaluated), ..StepReport::default() };
         let mut sum_squares = 0.0;
-        for (k, (&v, frame)) in problem.interior().iter().zip(frames).enumerate() {
+        for (k, (&v, frame)) in problem.curve_vertices().iter().zip(frames).enumerate() {
             match frame {
                 None => report.singular_vertices.push(v),
                 Some(frame) => {
                     if let Some(measured) = frame.signed_angle_degrees() {
-                        let error = angle_error(problem.family(), measured, problem.target(k).degrees);
+                        let error = problem.family().angle_error_degrees(measured, problem.target(k).degrees);
                         sum_squares += error * error;
                         report.angle_error_max_degrees = report.angle_error_max_degrees.max(error);
                         report.measured_vertices += 1;
@@ -77,28 +77,11 @@ impl StepReport {
     }
 }
 
-/// The measured signed angle (degrees, [`super::LevelFrame::signed_angle_degrees`]) at each of
-/// `vertices`: `None` at singular vertices, `Some(None)` where the level polyline is straight.
-/// Frames are measured in parallel and returned in the order of `vertices` (the result does not
-/// depend on the threads).
-pub(crate) fn measured_angles(mesh: &TriMesh, field: &[f64], vertices: &[u32]) -> Vec<Option<Option<f64>>> {
-    level_frames(mesh, field, vertices).into_iter().map(|frame| frame.map(|f| f.signed_angle_degrees())).collect()
-}
-
-/// The level frames at `vertices` (`None` at singular ones), measured in parallel and returned
-/// in the order of `vertices`.
-pub(crate) fn level_frames(mesh: &TriMesh, field: &[f64], vertices: &[u32]) -> Vec<Option<LevelFrame>> {
-    vertices.par_iter().map(|&v| level_frame(mesh, field, v as usize)).collect()
-}
-
-/// Angle error of a measured signed angle. Geodesics and asymptotic curves have no sign:
-/// there `θ` and `180° − θ` are the same family.
-fn angle_error(family: Family, measured: f64, theta: f64) -> f64 {
-    let error = (measured - theta).abs();
-    match family {
-        Family::PseudoGeodesic { .. } => error,
-        Family::Geodesic | Family::Asymptotic => error.min((180.0 - measured - theta).abs()),
-    }
+/// The level frames of `x` at the problem's curve vertices (`None` at singular ones), measured
+/// in parallel and returned in the order of [`FieldProblem::curve_vertices`] (the result does
+/// not depend on the threads).
+pub(crate) fn problem_frames(problem: &FieldProblem, x: &[f64]) -> Vec<Option<LevelFrame>> {
+    (0..problem.curve_vertices().len()).into_par_iter().map(|k| problem.level_frame(k, x)).collect()
 }
 
 /// Residuals the solver evaluated at the current variables, with the weights they carry.
@@ -114,7 +97,9 @@ impl Evaluated<'_> {
     /// up to rounding. `None` if the block was not evaluated or λ is too small to divide by.
     fn unit_squares(&self, problem: &FieldProblem, b: usize) -> Option<(f64, f64)> {
         let weight = match problem.block(b) {
-            Block::Fair(_) => self.weights.fair,
+            // Fit residuals carry √(λ_fair · FIT_RATIO): over λ_fair they give FIT_RATIO · E_fit,
+            // the share of E_fair they make.
+            Block::Fair(_) | Block::Fit(_) => self.weights.fair,
             Block::Grad(_) => self.weights.grad,
             Block::Curve(_) => self.weights.angle,
         };
@@ -132,7 +117,7 @@ fn energies(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>
     let mut e = Energies::default();
     for (b, (first, rest)) in block_squares(problem, x, 0..problem.block_count(), evaluated).into_iter().enumerate() {
         match problem.block(b) {
-            Block::Fair(_) => e.fair += first,
+            Block::Fair(_) | Block::Fit(_) => e.fair += first,
             Block::Grad(_) => e.grad += first,
             Block::Curve(_) => {
                 e.angle += first;
@@ -148,7 +133,8 @@ fn energies(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>
 /// [`Energies`] that says whether the level sets already form the family; from the `evaluated`
 /// residuals where there are some.
 pub(crate) fn curve_energy(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>) -> f64 {
-    let curves = problem.first_curve_block()..problem.block_count();
+    let first = problem.first_curve_block();
+    let curves = first..first + problem.curve_vertices().len();
     block_squares(problem, x, curves, evaluated).into_iter().map(|(first, rest)| first + rest).sum()
 }
 

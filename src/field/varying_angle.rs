@@ -3,7 +3,7 @@
 //! is a cubic fitted to the angles the current level curves have, lowered by 5 % at each update.
 //!
 //! The scheme, supervised by `E_fair` and `E_grad`:
-//! 1. measure the signed angle of every regular interior vertex from the field's own level
+//! 1. measure the signed angle of every regular curve vertex from the field's own level
 //!    polyline (as [`StepReport`] does) and fit the cubic [`AngleProfile`] to `(F_v, θ_v)`;
 //! 2. the target profile is that fit times `1 − lowering` (toward 0°, the asymptotic direction);
 //!    each vertex gets `θ_v = clamp(θ(F_v), min_degrees, max_degrees)` at its current `F_v`;
@@ -28,7 +28,7 @@ use super::error::FieldError;
 use super::field_solver::FieldSolver;
 use super::level_angles::{level_angles, LevelAngles};
 use super::params::{Family, VaryingAngleParams};
-use super::report::{measured_angles, StepReport};
+use super::report::{problem_frames, StepReport};
 use crate::curves::CurveError;
 use crate::mesh::{TriMesh, Vec3};
 use serde::{Deserialize, Serialize};
@@ -75,7 +75,7 @@ pub struct VaryingAngleSolver {
     params: VaryingAngleParams,
     fitted: AngleProfile,
     target: AngleProfile,
-    /// Per-vertex targets in degrees, one per interior vertex of the underlying problem.
+    /// Per-vertex targets in degrees, one per curve vertex of the underlying problem.
     targets: Vec<f64>,
     updates: usize,
     /// Iterations since the last update of the profile.
@@ -222,7 +222,7 @@ impl VaryingAngleSolver {
         self.frozen = self.updates >= self.params.max_updates;
     }
 
-    /// Sets `θ_v = clamp(target(F_v))` at every interior vertex for the current field values.
+    /// Sets `θ_v = clamp(target(F_v))` at every curve vertex for the current field values.
     fn apply_target(&mut self, target: AngleProfile) {
         let targets = self.evaluate_targets(&target);
         self.solver.retarget(&targets);
@@ -243,12 +243,12 @@ impl VaryingAngleSolver {
         }
     }
 
-    /// `clamp(target(F_v), min_degrees, max_degrees)` per interior vertex. Finite: the profile's
+    /// `clamp(target(F_v), min_degrees, max_degrees)` per curve vertex. Finite: the profile's
     /// coefficients and the field values are, and the clamp bounds the extrapolated cubic.
     fn evaluate_targets(&self, target: &AngleProfile) -> Vec<f64> {
         let field = self.solver.field();
         let (lo, hi) = (self.params.min_degrees, self.params.max_degrees);
-        self.solver.problem.interior().iter().map(|&v| target.evaluate(field[v as usize]).clamp(lo, hi)).collect()
+        self.solver.problem.curve_vertices().iter().map(|&v| target.evaluate(field[v as usize]).clamp(lo, hi)).collect()
     }
 
     fn target_range_degrees(&self) -> [f64; 2] {
@@ -271,12 +271,13 @@ impl VaryingAngleSolver {
     }
 }
 
-/// The cubic fitted to `(F_v, θ_v)` over the regular interior vertices with a defined binormal.
+/// The cubic fitted to `(F_v, θ_v)` over the regular curve vertices with a defined binormal.
 fn fit_measured(solver: &FieldSolver) -> Option<AngleProfile> {
     let field = solver.field();
-    let interior = solver.problem.interior();
-    let angles = measured_angles(solver.problem.mesh(), solver.internal_field(), interior);
-    let samples: Vec<(f64, f64)> = interior.iter().zip(angles).filter_map(|(&v, angle)| angle.flatten().map(|theta| (field[v as usize], theta))).collect();
+    let frames = problem_frames(&solver.problem, &solver.x);
+    let vertices = solver.problem.curve_vertices();
+    let samples: Vec<(f64, f64)> =
+        vertices.iter().zip(frames).filter_map(|(&v, frame)| frame?.signed_angle_degrees().map(|theta| (field[v as usize], theta))).collect();
     AngleProfile::fit(&samples)
 }
 

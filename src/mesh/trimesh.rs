@@ -3,7 +3,10 @@
 
 use serde::{Deserialize, Serialize};
 
+use std::sync::OnceLock;
+
 use super::error::MeshError;
+use super::local_quadric::{local_quadrics, LocalQuadric};
 use super::gradient::face_gradients;
 use super::normals::{face_normals_and_areas, vertex_normals};
 use super::star::{Stars, VertexStar};
@@ -37,6 +40,19 @@ pub struct TriMesh {
     face_gradients: Vec<[Vec3; 3]>,
     mean_edge_length: f64,
     bounding_box: (Vec3, Vec3),
+    smooth: SmoothGeometry,
+}
+
+/// The local quadrics and their normals, fitted on first use (a fit per vertex costs more than
+/// everything else a mesh derives, and many meshes never need it).
+#[derive(Clone, Debug, Default)]
+struct SmoothGeometry(OnceLock<(Vec<LocalQuadric>, Vec<Vec3>)>);
+
+impl PartialEq for SmoothGeometry {
+    /// Derived from positions and faces alone, which the mesh's equality compares.
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
 }
 
 impl TriMesh {
@@ -106,6 +122,7 @@ impl TriMesh {
             face_gradients,
             mean_edge_length,
             bounding_box,
+            smooth: SmoothGeometry::default(),
         }
     }
 
@@ -174,6 +191,27 @@ impl TriMesh {
     /// Unit vertex normals: corner-angle-weighted sum of face normals, normalised.
     pub fn vertex_normals(&self) -> &[Vec3] {
         &self.vertex_normals
+    }
+
+    /// The osculating quadric of the surface at every vertex ([`LocalQuadric`]: second-order
+    /// normal and second fundamental form from a fit over the two-ring), fitted on first use.
+    pub fn local_quadrics(&self) -> &[LocalQuadric] {
+        &self.smooth_geometry().0
+    }
+
+    /// Second-order unit vertex normals: those of the [`Self::local_quadrics`]. On irregular
+    /// triangulations they are more accurate than [`Self::vertex_normals`] by an order of the edge
+    /// length; they are the reference surface normals every quality measure uses.
+    pub fn smooth_normals(&self) -> &[Vec3] {
+        &self.smooth_geometry().1
+    }
+
+    fn smooth_geometry(&self) -> &(Vec<LocalQuadric>, Vec<Vec3>) {
+        self.smooth.0.get_or_init(|| {
+            let quadrics = local_quadrics(self);
+            let normals = quadrics.iter().map(|q| q.normal).collect();
+            (quadrics, normals)
+        })
     }
 
     /// Mixed Voronoi areas (Meyer et al. 2003); they sum to the total area.

@@ -16,6 +16,7 @@ use super::problem::{binormal, position, ruling, vec3, StripProblem};
 use super::strip::{RectifyingStrip, SkippedCurve, StripPattern};
 use super::surface_distance::{SurfacePoint, SurfaceProjector};
 use super::unrolling::unroll;
+use super::verdict::Verdict;
 use crate::curves::LevelCurve;
 use crate::mesh::{TriMesh, Vec3};
 use crate::solver::{LeastSquaresProblem, LevenbergMarquardt, LmOptions};
@@ -49,7 +50,8 @@ pub fn rectifying_strips(mesh: &TriMesh, curves: &[LevelCurve], params: &StripPa
         }
     }
     let metrics = PatternMetrics::from_strips(strips.iter().map(|s| &s.metrics));
-    Ok(StripPattern { strips, skipped, metrics })
+    let verdict = Verdict::judge(&strips, params.tolerance_degrees);
+    Ok(StripPattern { strips, skipped, metrics, verdict })
 }
 
 fn validate(params: &StripParams) -> Result<(), StripError> {
@@ -59,6 +61,10 @@ fn validate(params: &StripParams) -> Result<(), StripError> {
     let theta = params.theta_degrees;
     if !(theta.is_finite() && (0.0..=180.0).contains(&theta)) {
         return Err(StripError::InvalidTheta { theta_degrees: theta });
+    }
+    let tolerance = params.tolerance_degrees;
+    if !(tolerance.is_finite() && tolerance > 0.0 && tolerance < 180.0) {
+        return Err(StripError::InvalidParameter { name: "tolerance_degrees", message: format!("must lie in (0°, 180°), got {tolerance}") });
     }
     let w = &params.weights;
     let weights = [
@@ -294,7 +300,15 @@ impl<'a> StripOptimiser<'a> {
         let surface: Vec<SurfacePoint> = centre.iter().map(|p| self.projector.project(p).unwrap_or_else(|| unprojected(p))).collect();
         let normals: Vec<Vec3> = surface.iter().map(|s| s.normal).collect();
         let distances: Vec<f64> = surface.iter().map(|s| s.distance).collect();
-        let geometry = StripGeometry { centre: &centre, rulings: &rulings, normals: &normals, distances: &distances, unrolling: &unrolling };
+        let geometry = StripGeometry {
+            centre: &centre,
+            rulings: &rulings,
+            normals: &normals,
+            distances: &distances,
+            unrolling: &unrolling,
+            offsets: &offsets,
+            width: params.width,
+        };
         let metrics = StripMetrics::measure(&geometry, params.theta_degrees, diagonal);
         if metrics.flipped_quads > 0 {
             warnings.push(StripWarning::FlippedQuads { count: metrics.flipped_quads });

@@ -1,6 +1,7 @@
 //! The quality measures of Table 4, per strip and over a whole pattern.
 use super::frenet::{discrete_binormals, unit_edges};
 use super::unrolling::{straightness, Unrolling};
+use crate::field::Family;
 use crate::mesh::Vec3;
 use serde::{Deserialize, Serialize};
 
@@ -24,6 +25,17 @@ pub struct StripMetrics {
     pub flipped_quads: usize,
     /// Length of the centre line.
     pub length: f64,
+    /// Max over the quads of the error of the strip's own angle: the quad's plane should be
+    /// the rectifying plane, whose normal makes the angle 90° − θ with the surface normal. The
+    /// quad's in-plane direction across the centre line (`ê_j × N_j`, N the quad normal) is
+    /// measured with the signed angle of Sec. 3.1 against the smooth surface normal at the quad.
+    /// Unlike `max_diff_theta_degrees` it is defined where the centre line is straight.
+    pub max_quad_angle_error_degrees: f64,
+    /// The quad with that error (index along the strip) and its centre.
+    pub worst_quad: usize,
+    pub worst_quad_point: [f64; 3],
+    /// Length of the longest ruling segment from the centre line to a boundary, over the strip width.
+    pub max_ruling_over_width: f64,
 }
 
 /// Table 4 over all strips of a pattern: maxima, and the sum of `E_planar`.
@@ -37,6 +49,8 @@ pub struct PatternMetrics {
     pub max_planar: f64,
     pub appro_percent: f64,
     pub flipped_quads: usize,
+    pub max_quad_angle_error_degrees: f64,
+    pub max_ruling_over_width: f64,
 }
 
 impl PatternMetrics {
@@ -50,6 +64,8 @@ impl PatternMetrics {
             max_planar: m.max_planar.max(s.max_planar),
             appro_percent: m.appro_percent.max(s.appro_percent),
             flipped_quads: m.flipped_quads + s.flipped_quads,
+            max_quad_angle_error_degrees: m.max_quad_angle_error_degrees.max(s.max_quad_angle_error_degrees),
+            max_ruling_over_width: m.max_ruling_over_width.max(s.max_ruling_over_width),
         })
     }
 }
@@ -64,12 +80,18 @@ pub struct StripGeometry<'a> {
     /// Distances of the centre vertices from the surface.
     pub distances: &'a [f64],
     pub unrolling: &'a Unrolling,
+    /// Offsets from the centre vertices to the left boundary along the rulings.
+    pub offsets: &'a [Vec3],
+    /// The strip width.
+    pub width: f64,
 }
 
 impl StripMetrics {
-    /// The Table 4 measures of a strip lying at `strip`, for target angle `theta_degrees`;
+    /// The Table 4 measures of a strip lying at `strip`, for the family of target angle
+    /// `theta_degrees` ([`Family::from_theta`]: at 0°, 90° and 180° the quad angle has no sign);
     /// `appro_percent` relates the distances to `diagonal` (the surface's bounding-box diagonal).
     pub fn measure(strip: &StripGeometry, theta_degrees: f64, diagonal: f64) -> StripMetrics {
+        let family = Family::from_theta(theta_degrees);
         let edges = unit_edges(strip.centre);
         let binormals = discrete_binormals(strip.centre);
         let mut metrics = StripMetrics {
@@ -104,7 +126,30 @@ impl StripMetrics {
                 || previous_normal.is_some_and(|p| p.dot(&quad_normal) <= 0.0);
             metrics.flipped_quads += usize::from(flipped);
             previous_normal = Some(quad_normal);
+            if let Some(error) = quad_angle_error(e, &quad_normal, &(strip.normals[j] + strip.normals[j + 1]), family, theta_degrees) {
+                if error > metrics.max_quad_angle_error_degrees || j == 0 {
+                    metrics.max_quad_angle_error_degrees = metrics.max_quad_angle_error_degrees.max(error);
+                    let centre = (strip.centre[j] + strip.centre[j + 1]) * 0.5;
+                    metrics.worst_quad = j;
+                    metrics.worst_quad_point = [centre.x, centre.y, centre.z];
+                }
+            }
+        }
+        if strip.width > 0.0 {
+            metrics.max_ruling_over_width = strip.offsets.iter().map(|o| o.norm()).fold(0.0, f64::max) / strip.width;
         }
         metrics
     }
+}
+
+/// The error in degrees of a quad's angle: its in-plane direction across the centre line,
+/// `b = ê × N̂`, against the surface normal `n` (unnormalised sums are fine), with the signed
+/// angle of Sec. 3.1 (`u = n × ê`); `None` for a degenerate quad.
+fn quad_angle_error(edge: &Vec3, quad_normal: &Vec3, normal: &Vec3, family: Family, theta_degrees: f64) -> Option<f64> {
+    let n = normal.try_normalize(0.0)?;
+    let b = edge.cross(&quad_normal.try_normalize(0.0)?).try_normalize(0.0)?;
+    let u = n.cross(edge).try_normalize(0.0)?;
+    let sign = if b.dot(&u) < 0.0 { -1.0 } else { 1.0 };
+    let measured = (sign * b.dot(&n)).clamp(-1.0, 1.0).acos().to_degrees();
+    Some(family.angle_error_degrees(measured, theta_degrees))
 }

@@ -1,8 +1,8 @@
 //! Rectifying developable strips along level curves (paper Sec. 2.1, 3.4, Fig. 18–20, Table 4):
 //! binormal-strip optimisation of each polyline (Eq. 8–10 on polyline vertices), discrete
 //! rectifying developables (version 1, Fig. 19, and the preferred strip of planar quads, Fig. 20,
-//! Eq. 16–17, solved with the crate's Levenberg–Marquardt), flat unrollings and the quality measures
-//! of Table 4.
+//! Eq. 16–17, solved with the crate's Levenberg–Marquardt), flat unrollings, the quality measures
+//! of Table 4 and the verdict on a pattern.
 
 mod builder;
 mod error;
@@ -13,6 +13,7 @@ mod problem;
 mod strip;
 mod surface_distance;
 mod unrolling;
+mod verdict;
 
 pub use builder::rectifying_strips;
 pub use error::{StripError, StripWarning};
@@ -22,3 +23,4 @@ pub use params::{StripParams, StripWeights, MAX_STRIP_ITERATIONS, MAX_STRIP_ROUN
 pub use strip::{RectifyingStrip, SkippedCurve, StripPattern};
 pub use surface_distance::{SurfacePoint, SurfaceProjector};
 pub use unrolling::{straightness, unroll, Unrolling};
+pub use verdict::{Verdict, WorstQuad, DEFAULT_TOLERANCE_DEGREES};

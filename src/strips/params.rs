@@ -55,6 +55,9 @@ pub struct StripParams {
     /// Iterations of the closing polish: positions held, rulings and quad normals solved for
     /// exact planarity (Eq. 16–17 only).
     pub polish_iterations: usize,
+    /// Largest angle error (degrees, in (0, 180)) of a quad in an acceptable pattern (see
+    /// [`super::Verdict`]). Default 2°.
+    pub tolerance_degrees: f64,
 }
 
 impl StripParams {
@@ -68,6 +71,7 @@ impl StripParams {
             iterations_per_round: 15,
             final_iterations: 60,
             polish_iterations: 30,
+            tolerance_degrees: super::verdict::DEFAULT_TOLERANCE_DEGREES,
         }
     }
 }

@@ -9,6 +9,10 @@
 //! `d_i·(ê_i − ê_{i−1}) = 0`, whose value directly measures the defect of the angle sum
 //! `α_i⁻ + α_i⁺ − π` that bends the unrolled strip.
 //!
+//! A ruling block also bounds the ruling's angle to the centre line from below
+//! ([`MIN_RULING_ANGLE_DEGREES`]): a hinge row `max(0, (d̂·t̂)² − cos²α_min)` with `t̂` the unit
+//! chord `c_{i+1} − c_{i−1}` (the end edge at the ends).
+//!
 //! Surface normals `n_i`, side vectors `u_i`, closest surface points and ruling anchors are frozen
 //! data, refreshed between rounds by the caller.
 
@@ -22,7 +26,16 @@ const PER_VERTEX: usize = 9;
 const CURVE_ROWS: usize = 5;
 const FAIR_ROWS: usize = 3;
 const SURFACE_ROWS: usize = 4;
-const RULING_ROWS: usize = 5;
+const RULING_ROWS: usize = 6;
+
+/// Smallest angle between a ruling and the centre line (degrees). Where the centre line is
+/// nearly straight or turns through an inflection, the exact rectifying developable's rulings
+/// turn towards the tangent (the Darboux vector `τ t + κ b` with κ → 0), so the strip's edges
+/// run off to infinity and quads flip as the ruling passes the tangent. Below this angle a ruling
+/// pays a penalty (weighted like planarity), which keeps every ruling segment from the centre line
+/// to a boundary within `1 / (2 sin 20°) ≈ 1.46` strip widths; the strip then gives up a little
+/// of its angle or bends its centre line there, which the verdict measures.
+pub(crate) const MIN_RULING_ANGLE_DEGREES: f64 = 20.0;
 const PLANAR_ROWS: usize = 4;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -257,6 +270,24 @@ impl LeastSquaresProblem for StripProblem {
                     r[2 + k] = s_anchor * offset[k];
                 }
                 jac.add_identity(2, ruling(i), s_anchor);
+                // Hinge on the ruling's angle to the centre line.
+                let (from, to) = (i.saturating_sub(1), (i + 1).min(last));
+                let chord = c(to) - c(from);
+                let (d_norm, chord_norm) = (d.norm(), chord.norm());
+                if d_norm > 0.0 && chord_norm > 0.0 {
+                    let (d_unit, t_unit) = (d / d_norm, chord / chord_norm);
+                    let cosine = d_unit.dot(&t_unit);
+                    let bound = MIN_RULING_ANGLE_DEGREES.to_radians().cos();
+                    let excess = cosine * cosine - bound * bound;
+                    if excess > 0.0 {
+                        r[5] = s_planar * excess;
+                        let scale = s_planar * 2.0 * cosine;
+                        jac.add(5, ruling(i), (t_unit - d_unit * cosine) * (scale / d_norm));
+                        let along = (d_unit - t_unit * cosine) * (scale / chord_norm);
+                        jac.add(5, position(to), along);
+                        jac.add(5, position(from), -along);
+                    }
+                }
             }
             Block::Planar(j) => {
                 let s = w.planarity.sqrt();

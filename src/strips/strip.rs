@@ -3,6 +3,7 @@
 use super::error::StripWarning;
 use super::metrics::{PatternMetrics, StripMetrics};
 use super::unrolling::Unrolling;
+use super::verdict::Verdict;
 use crate::mesh::Vec3;
 
 /// One rectifying developable strip (Fig. 20): planar quads
@@ -37,10 +38,12 @@ pub struct SkippedCurve {
     pub warnings: Vec<StripWarning>,
 }
 
-/// All strips of a pattern with the Table 4 summary.
+/// All strips of a pattern with the Table 4 summary and the verdict.
 #[derive(Clone, Debug, PartialEq)]
 pub struct StripPattern {
     pub strips: Vec<RectifyingStrip>,
     pub skipped: Vec<SkippedCurve>,
     pub metrics: PatternMetrics,
+    /// Whether the strips meet θ within [`super::StripParams::tolerance_degrees`] without flipped quads.
+    pub verdict: Verdict,
 }

@@ -18,6 +18,21 @@ pub struct Unrolling {
     pub length: f64,
 }
 
+impl Unrolling {
+    /// The flat strip's width: the mean distance between its two boundaries, measured across the
+    /// centre line's end-to-end direction (0 for a strip of fewer than two points).
+    pub fn width(&self) -> f64 {
+        let (Some(first), Some(last)) = (self.centre.first(), self.centre.last()) else { return 0.0 };
+        let (dx, dy) = (last[0] - first[0], last[1] - first[1]);
+        let length = dx.hypot(dy);
+        if !(length > 0.0) || self.left.is_empty() {
+            return 0.0;
+        }
+        let across = |p: &[f64; 2], q: &[f64; 2]| ((p[0] - q[0]) * -dy + (p[1] - q[1]) * dx).abs() / length;
+        self.left.iter().zip(&self.right).map(|(l, r)| across(l, r)).sum::<f64>() / self.left.len() as f64
+    }
+}
+
 fn angle(a: &Vec3, b: &Vec3) -> f64 {
     a.cross(b).norm().atan2(a.dot(b))
 }

@@ -15,6 +15,7 @@ mod curve;
 mod edge_search;
 mod error;
 mod first_segment;
+mod guide_set;
 mod intersections;
 mod neighbourhood;
 mod normal;
@@ -28,6 +29,7 @@ mod tracer;
 
 pub use curve::{StopReason, TracedCurve};
 pub use error::TraceError;
+pub use guide_set::{trace_guide_set, GuideSet};
 pub use intersections::{intersections, Crossing, IntersectionReport};
 pub use options::{TraceOptions, MAX_TRACE_POINTS};
 pub use order::{check_order, OrderDefect};

@@ -20,7 +20,12 @@ pub fn saddle(c: f64, half_width: f64, target_vertices: usize) -> TriMesh {
 
 /// Arc length along the circumference and height: the isometric development of the cylinder.
 pub fn development(p: &Vec3) -> (f64, f64) {
-    (RADIUS * p.y.atan2(p.x), p.z)
+    develop(p, RADIUS)
+}
+
+/// The development of a point of the cylinder of radius `radius` about the z axis.
+pub fn develop(p: &Vec3, radius: f64) -> (f64, f64) {
+    (radius * p.y.atan2(p.x), p.z)
 }
 
 /// Height plus a low-frequency perturbation: smooth, but its level sets are not P-curves.

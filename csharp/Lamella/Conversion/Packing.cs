@@ -65,6 +65,29 @@ namespace Lamella.Conversion
             return items;
         }
 
+        /// <summary>
+        /// The items with their first point repeated at the end where <paramref name="closed"/> is true (one flag per
+        /// item), so that polylines built from them close: the library lists a closed polyline's points once.
+        /// </summary>
+        public static Packed CloseLoops(Packed items, bool[] closed)
+        {
+            if (items == null) throw new ArgumentNullException(nameof(items));
+            if (closed == null) throw new ArgumentNullException(nameof(closed));
+            if (closed.Length != items.Count) throw new ArgumentException(closed.Length + " closed flags for " + items.Count + " items", nameof(closed));
+            double[][] unpacked = Unpack(items);
+            int d = items.Dimension;
+            for (int i = 0; i < unpacked.Length; i++)
+            {
+                double[] item = unpacked[i];
+                if (!closed[i] || item.Length == 0) continue;
+                var loop = new double[item.Length + d];
+                Array.Copy(item, loop, item.Length);
+                Array.Copy(item, 0, loop, item.Length, d);
+                unpacked[i] = loop;
+            }
+            return Pack(unpacked, d);
+        }
+
         /// <summary>Throws unless <paramref name="offsets"/> starts at 0, never decreases and ends at <paramref name="total"/>.</summary>
         public static void CheckOffsets(int[] offsets, int total)
         {

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 
 namespace Lamella.Conversion
 {
@@ -76,16 +77,27 @@ namespace Lamella.Conversion
         /// overlap: each strip is moved so its bounding box starts at x = 0 and at <paramref name="gap"/> above the
         /// previous strip's box. Returns x, y, z per vertex (z = 0).
         /// </summary>
-        public static double[] LayOutFlat(double[] unrolled, int[] vertexOffsets, double gap)
+        public static double[] LayOutFlat(double[] unrolled, int[] vertexOffsets, double gap) =>
+            Shift(unrolled, vertexOffsets, FlatLayoutShifts(unrolled, vertexOffsets, gap));
+
+        /// <summary>
+        /// The translation (dx, dy per strip) of <see cref="LayOutFlat"/>, to move other flat data of the strips (their
+        /// unrolled centre lines) along with them; (0, 0) for a strip without vertices.
+        /// </summary>
+        public static double[] FlatLayoutShifts(double[] unrolled, int[] vertexOffsets, double gap)
         {
             if (unrolled == null) throw new ArgumentNullException(nameof(unrolled));
             if (!(gap >= 0) || double.IsInfinity(gap)) throw new ArgumentOutOfRangeException(nameof(gap), "the gap must be finite and ≥ 0");
             Packing.CheckOffsets(vertexOffsets, unrolled.Length / 2);
-            var xyz = new double[unrolled.Length / 2 * 3];
+            var shifts = new double[2 * (vertexOffsets.Length - 1)];
             double top = 0;
             bool placed = false;
             for (int s = 0; s + 1 < vertexOffsets.Length; s++)
             {
+                if (vertexOffsets[s + 1] == vertexOffsets[s])
+                {
+                    continue;
+                }
                 double minX = double.PositiveInfinity, minY = double.PositiveInfinity, maxY = double.NegativeInfinity;
                 for (int v = vertexOffsets[s]; v < vertexOffsets[s + 1]; v++)
                 {
@@ -93,20 +105,102 @@ namespace Lamella.Conversion
                     minY = Math.Min(minY, unrolled[2 * v + 1]);
                     maxY = Math.Max(maxY, unrolled[2 * v + 1]);
                 }
-                if (vertexOffsets[s + 1] == vertexOffsets[s])
-                {
-                    continue;
-                }
-                double shiftY = (placed ? top + gap : 0) - minY;
-                for (int v = vertexOffsets[s]; v < vertexOffsets[s + 1]; v++)
-                {
-                    xyz[3 * v] = unrolled[2 * v] - minX;
-                    xyz[3 * v + 1] = unrolled[2 * v + 1] + shiftY;
-                }
-                top = maxY + shiftY;
+                shifts[2 * s] = -minX;
+                shifts[2 * s + 1] = (placed ? top + gap : 0) - minY;
+                top = maxY + shifts[2 * s + 1];
                 placed = true;
             }
+            return shifts;
+        }
+
+        /// <summary>Moves each item of plane points (x, y each) by its shift (dx, dy per item); returns x, y, z per point (z = 0).</summary>
+        public static double[] Shift(double[] planePoints, int[] offsets, double[] shifts)
+        {
+            if (planePoints == null) throw new ArgumentNullException(nameof(planePoints));
+            if (shifts == null) throw new ArgumentNullException(nameof(shifts));
+            Packing.CheckOffsets(offsets, planePoints.Length / 2);
+            if (shifts.Length != 2 * (offsets.Length - 1)) throw new ArgumentException(shifts.Length / 2 + " shifts for " + (offsets.Length - 1) + " items", nameof(shifts));
+            var xyz = new double[planePoints.Length / 2 * 3];
+            for (int s = 0; s + 1 < offsets.Length; s++)
+            {
+                for (int v = offsets[s]; v < offsets[s + 1]; v++)
+                {
+                    xyz[3 * v] = planePoints[2 * v] + shifts[2 * s];
+                    xyz[3 * v + 1] = planePoints[2 * v + 1] + shifts[2 * s + 1];
+                }
+            }
             return xyz;
+        }
+
+        /// <summary>
+        /// Points given in XY coordinates (x, y, z each) placed on a plane: origin + x·X + y·Y + z·(X × Y), for the
+        /// plane's unit, orthogonal axes X and Y (as a Rhino Plane has).
+        /// </summary>
+        public static double[] OnPlane(double[] xyz, double[] origin, double[] xAxis, double[] yAxis)
+        {
+            if (xyz == null) throw new ArgumentNullException(nameof(xyz));
+            foreach (double[] v in new[] { origin, xAxis, yAxis })
+            {
+                if (v == null || v.Length != 3) throw new ArgumentException("the plane's origin and axes take three values each");
+                foreach (double c in v)
+                {
+                    if (double.IsNaN(c) || double.IsInfinity(c)) throw new ArgumentException("the plane is not finite");
+                }
+            }
+            double[] zAxis =
+            {
+                xAxis[1] * yAxis[2] - xAxis[2] * yAxis[1], xAxis[2] * yAxis[0] - xAxis[0] * yAxis[2], xAxis[0] * yAxis[1] - xAxis[1] * yAxis[0],
+            };
+            var result = new double[xyz.Length];
+            for (int p = 0; p < xyz.Length / 3; p++)
+            {
+                for (int c = 0; c < 3; c++)
+                {
+                    result[3 * p + c] = origin[c] + xyz[3 * p] * xAxis[c] + xyz[3 * p + 1] * yAxis[c] + xyz[3 * p + 2] * zAxis[c];
+                }
+            }
+            return result;
+        }
+
+        /// <summary>
+        /// Each strip's boundary as a closed polyline, <paramref name="dimension"/> values per point: left_0 … left_n−1,
+        /// right_n−1 … right_0 and left_0 again. Flat, the cutting line of the strip; in space, the outline that nodes and
+        /// connections are detailed on. A strip of 2n vertices gives 2n + 1 points.
+        /// </summary>
+        public static Packed Outlines(double[] vertices, int dimension, int[] vertexOffsets)
+        {
+            if (vertices == null) throw new ArgumentNullException(nameof(vertices));
+            if (dimension < 1) throw new ArgumentOutOfRangeException(nameof(dimension));
+            Packing.CheckOffsets(vertexOffsets, vertices.Length / dimension);
+            var outlines = new List<double[]>(vertexOffsets.Length - 1);
+            for (int s = 0; s + 1 < vertexOffsets.Length; s++)
+            {
+                int first = vertexOffsets[s], count = vertexOffsets[s + 1] - first, n = count / 2;
+                if (count % 2 != 0) throw new ArgumentException("strip " + s + " has " + count + " vertices, not two per centre point", nameof(vertexOffsets));
+                var outline = new double[count == 0 ? 0 : (count + 1) * dimension];
+                for (int k = 0; k < count; k++)
+                {
+                    int v = k < n ? first + k : first + n + (count - 1 - k); // left forward, then right backward
+                    Array.Copy(vertices, v * dimension, outline, k * dimension, dimension);
+                }
+                if (count > 0) Array.Copy(vertices, first * dimension, outline, count * dimension, dimension);
+                outlines.Add(outline);
+            }
+            return Packing.Pack(outlines, dimension);
+        }
+
+        /// <summary>The middle point (index ⌊n / 2⌋ of n) of each item, x, y, z each: where a strip's label goes; an empty item gives NaN.</summary>
+        public static double[] MiddlePoints(double[] points, int[] offsets)
+        {
+            if (points == null) throw new ArgumentNullException(nameof(points));
+            Packing.CheckOffsets(offsets, points.Length / 3);
+            var middles = new double[3 * (offsets.Length - 1)];
+            for (int s = 0; s + 1 < offsets.Length; s++)
+            {
+                int n = offsets[s + 1] - offsets[s];
+                for (int c = 0; c < 3; c++) middles[3 * s + c] = n == 0 ? double.NaN : points[3 * (offsets[s] + n / 2) + c];
+            }
+            return middles;
         }
     }
 }

@@ -5,11 +5,25 @@ using System.Runtime.InteropServices;
 
 namespace Lamella
 {
+    /// <summary>The operating systems the native library is built for.</summary>
+    public enum NativePlatform
+    {
+        /// <summary>Windows: <c>lamella_native.dll</c>.</summary>
+        Windows,
+        /// <summary>macOS: <c>liblamella_native.dylib</c>.</summary>
+        MacOS,
+        /// <summary>Linux: <c>liblamella_native.so</c>.</summary>
+        Linux,
+    }
+
     /// <summary>
-    /// Loads the native library by full path before the first call, so that <c>[DllImport("lamella")]</c> finds it
-    /// even when the host (Grasshopper) loaded the managed assembly from memory and would not search the plugin
-    /// folder: <c>lamella.dll</c> with LoadLibrary on Windows, <c>liblamella.dylib</c> / <c>liblamella.so</c> with
-    /// dlopen on macOS / Linux. How the later <c>[DllImport]</c> calls bind to the loaded file depends on the runtime:
+    /// Loads the native library by full path before the first call, so that <c>[DllImport("lamella_native")]</c> finds
+    /// it even when the host (Grasshopper) loaded the managed assembly from memory and would not search the plugin
+    /// folder: <c>lamella_native.dll</c> with LoadLibrary on Windows, <c>liblamella_native.dylib</c> /
+    /// <c>liblamella_native.so</c> with dlopen on macOS / Linux. Cargo builds the library as <c>lamella.dll</c> /
+    /// <c>liblamella.*</c>; packaging copies it under the name above, because on Windows (case-insensitive file names)
+    /// <c>lamella.dll</c> would be the same file as the managed <c>Lamella.dll</c> beside it.
+    /// How the later <c>[DllImport]</c> calls bind to the loaded file depends on the runtime:
     /// .NET Framework on Windows finds the loaded module by name; .NET (Rhino 8) is given the handle through a
     /// DllImport resolver; Mono (Rhino 7 on macOS) searches the folder of Lamella.dll itself, so the native library
     /// must sit next to it there (a library loaded elsewhere is reported, not silently ignored).
@@ -20,16 +34,16 @@ namespace Lamella
         private static string loadedPath;
 
         /// <summary>The file name of the native library on this operating system.</summary>
-        public static string FileName
+        public static string FileName => FileNameOn(CurrentPlatform());
+
+        /// <summary>The file name of the native library on <paramref name="platform"/>.</summary>
+        public static string FileNameOn(NativePlatform platform)
         {
-            get
+            switch (platform)
             {
-                switch (CurrentPlatform())
-                {
-                    case Platform.Windows: return "lamella.dll";
-                    case Platform.MacOS: return "liblamella.dylib";
-                    default: return "liblamella.so";
-                }
+                case NativePlatform.Windows: return Interop.NativeMethods.Library + ".dll";
+                case NativePlatform.MacOS: return "lib" + Interop.NativeMethods.Library + ".dylib";
+                default: return "lib" + Interop.NativeMethods.Library + ".so";
             }
         }
 
@@ -87,7 +101,7 @@ namespace Lamella
             catch (DllNotFoundException e)
             {
                 throw new DllNotFoundException(
-                    "the Lamella native library was loaded from " + path + " but [DllImport(\"lamella\")] did not bind to it (" +
+                    "the Lamella native library was loaded from " + path + " but [DllImport(\"" + Interop.NativeMethods.Library + "\")] did not bind to it (" +
                     e.Message + "); on Mono, place " + FileName + " next to Lamella.dll", e);
             }
         }
@@ -110,16 +124,14 @@ namespace Lamella
             }
         }
 
-        private enum Platform { Windows, MacOS, Linux }
-
-        private static Platform CurrentPlatform()
+        private static NativePlatform CurrentPlatform()
         {
             if (Environment.OSVersion.Platform == PlatformID.Win32NT)
             {
-                return Platform.Windows;
+                return NativePlatform.Windows;
             }
             // Mono reports macOS as PlatformID.Unix: RuntimeInformation tells them apart.
-            return Unix.IsDarwin() ? Platform.MacOS : Platform.Linux;
+            return Unix.IsDarwin() ? NativePlatform.MacOS : NativePlatform.Linux;
         }
 
         private static string[] PlatformSubfolders()
@@ -127,8 +139,8 @@ namespace Lamella
             string arch = Environment.Is64BitProcess ? (IsArm64() ? "arm64" : "x64") : "x86";
             switch (CurrentPlatform())
             {
-                case Platform.Windows: return new[] { "win-" + arch };
-                case Platform.MacOS: return new[] { "osx", "osx-" + arch };
+                case NativePlatform.Windows: return new[] { "win-" + arch };
+                case NativePlatform.MacOS: return new[] { "osx", "osx-" + arch };
                 default: return new[] { "linux-" + arch };
             }
         }
@@ -152,7 +164,7 @@ namespace Lamella
 #else
             switch (CurrentPlatform())
             {
-                case Platform.Windows:
+                case NativePlatform.Windows:
                     if (Kernel32.LoadLibraryW(path) != IntPtr.Zero)
                     {
                         return null;
@@ -160,7 +172,7 @@ namespace Lamella
                     return "LoadLibrary error " + Marshal.GetLastWin32Error();
                 // dlerror is called first so that the runtime binds it (binding itself calls dlsym, which would
                 // clear the message of a failed dlopen) and any stale message is cleared.
-                case Platform.MacOS:
+                case NativePlatform.MacOS:
                     MacDl.dlerror();
                     return DlopenResult(MacDl.dlopen(path, Unix.RtldNowGlobal), MacDl.dlerror);
                 default:

@@ -13,8 +13,12 @@ namespace Lamella.Interop
     /// </summary>
     internal static class NativeMethods
     {
-        /// <summary>The library name: lamella.dll, liblamella.so, liblamella.dylib (see <see cref="NativeLibraryLoader"/>).</summary>
-        public const string Library = "lamella";
+        /// <summary>
+        /// The library name: lamella_native.dll, liblamella_native.so, liblamella_native.dylib (see
+        /// <see cref="NativeLibraryLoader"/>): cargo's lamella.dll / liblamella.* copied under a name that no file system
+        /// confuses with the managed Lamella.dll.
+        /// </summary>
+        public const string Library = "lamella_native";
         private const CallingConvention Cdecl = CallingConvention.Cdecl;
 
         // Versions, status names, errors, test hooks.

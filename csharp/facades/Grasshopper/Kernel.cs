@@ -4,6 +4,7 @@ using System;
 using System.Collections;
 using System.Collections.Generic;
 using System.Drawing;
+using System.Runtime.CompilerServices;
 using GH_IO.Serialization;
 
 namespace Grasshopper
@@ -19,6 +20,10 @@ namespace Grasshopper.Kernel
     public enum GH_ParamAccess { item = 0, list = 1, tree = 2 }
 
     public enum GH_RuntimeMessageLevel { Blank = 0, Warning = 10, Error = 20, Remark = 255 }
+
+    public enum GH_DocumentContext { Unknown = 0, None = 1, Open = 2, Close = 3, Loaded = 4, Unloaded = 5, Lock = 6, Unlock = 7 }
+
+    public enum GH_LoadingInstruction { Proceed = 0, Abort = 1 }
 
     [Flags]
     public enum GH_Exposure
@@ -38,10 +43,19 @@ namespace Grasshopper.Kernel
         public string Location { get { throw new NotSupportedException("facade"); } }
     }
 
+    public abstract class GH_AssemblyPriority
+    {
+        protected GH_AssemblyPriority() { throw new NotSupportedException("facade"); }
+        public abstract GH_LoadingInstruction PriorityLoad();
+    }
+
     public class GH_ComponentServer
     {
         internal GH_ComponentServer() { throw new NotSupportedException("facade"); }
         public GH_AssemblyInfo FindAssembly(Guid libraryId) { throw new NotSupportedException("facade"); }
+        public void AddCategoryIcon(string fullCategoryName, Bitmap icon) { throw new NotSupportedException("facade"); }
+        public void AddCategoryShortName(string fullCategoryName, string categoryAbbreviation) { throw new NotSupportedException("facade"); }
+        public void AddCategorySymbolName(string fullCategoryName, char symbol) { throw new NotSupportedException("facade"); }
     }
 
     public interface IGH_Param
@@ -55,6 +69,7 @@ namespace Grasshopper.Kernel
         bool GetDataList<T>(int index, List<T> list);
         bool SetData(int paramIndex, object data);
         bool SetDataList(int paramIndex, IEnumerable data);
+        int Iteration { get; }
     }
 
     public class GH_Document
@@ -62,11 +77,14 @@ namespace Grasshopper.Kernel
         internal GH_Document() { throw new NotSupportedException("facade"); }
         public delegate void GH_ScheduleDelegate(GH_Document doc);
         public void ScheduleSolution(int delay, GH_Document.GH_ScheduleDelegate callback) { throw new NotSupportedException("facade"); }
+        public static bool IsEscapeKeyDown() { throw new NotSupportedException("facade"); }
     }
 
     public abstract class GH_InstanceDescription
     {
         internal GH_InstanceDescription() { throw new NotSupportedException("facade"); }
+        public string Name { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        public string NickName { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
         public virtual bool Write(GH_IWriter writer) { throw new NotSupportedException("facade"); }
         public virtual bool Read(GH_IReader reader) { throw new NotSupportedException("facade"); }
     }
@@ -79,6 +97,11 @@ namespace Grasshopper.Kernel
         protected virtual Bitmap Icon { get { throw new NotSupportedException("facade"); } }
         public GH_Document OnPingDocument() { throw new NotSupportedException("facade"); }
         public virtual void ExpireSolution(bool recompute) { throw new NotSupportedException("facade"); }
+        public virtual void RemovedFromDocument(GH_Document document) { throw new NotSupportedException("facade"); }
+        public virtual void DocumentContextChanged(GH_Document document, GH_DocumentContext context) { throw new NotSupportedException("facade"); }
+        // The real GH_DocumentObject overrides its base's serialisation: base.Write/Read in a subclass must bind here or lower.
+        public override bool Write(GH_IWriter writer) { throw new NotSupportedException("facade"); }
+        public override bool Read(GH_IReader reader) { throw new NotSupportedException("facade"); }
     }
 
     public abstract class GH_ActiveObject : GH_DocumentObject
@@ -86,6 +109,15 @@ namespace Grasshopper.Kernel
         internal GH_ActiveObject() { throw new NotSupportedException("facade"); }
         public void AddRuntimeMessage(GH_RuntimeMessageLevel level, string text) { throw new NotSupportedException("facade"); }
         public override void ExpireSolution(bool recompute) { throw new NotSupportedException("facade"); }
+        public override bool Write(GH_IWriter writer) { throw new NotSupportedException("facade"); }
+        public override bool Read(GH_IReader reader) { throw new NotSupportedException("facade"); }
+    }
+
+    public abstract class GH_Param<T> : GH_ActiveObject, IGH_Param where T : class, Grasshopper.Kernel.Types.IGH_Goo
+    {
+        protected GH_Param(string name, string nickname, string description, string category, string subcategory, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
+        public bool Optional { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        protected virtual T InstantiateT() { throw new NotSupportedException("facade"); }
     }
 
     public abstract class GH_Component : GH_ActiveObject
@@ -95,10 +127,20 @@ namespace Grasshopper.Kernel
         protected abstract void RegisterInputParams(GH_Component.GH_InputParamManager pManager);
         protected abstract void RegisterOutputParams(GH_Component.GH_OutputParamManager pManager);
         protected abstract void SolveInstance(IGH_DataAccess DA);
+        protected virtual void BeforeSolveInstance() { throw new NotSupportedException("facade"); }
+        protected virtual void AfterSolveInstance() { throw new NotSupportedException("facade"); }
+        protected static double DocumentTolerance() { throw new NotSupportedException("facade"); }
+        // Real plugins' base.Write/Read calls reference GH_Component::Write/Read: the real GH_Component overrides them.
+        public override bool Write(GH_IWriter writer) { throw new NotSupportedException("facade"); }
+        public override bool Read(GH_IReader reader) { throw new NotSupportedException("facade"); }
+        public override void RemovedFromDocument(GH_Document document) { throw new NotSupportedException("facade"); }
+        public override void DocumentContextChanged(GH_Document document, GH_DocumentContext context) { throw new NotSupportedException("facade"); }
 
         public class GH_InputParamManager
         {
             internal GH_InputParamManager() { throw new NotSupportedException("facade"); }
+            // The real indexer is named Param (get_Param in the IL), not the C# default Item.
+            [IndexerName("Param")]
             public IGH_Param this[int index] { get { throw new NotSupportedException("facade"); } }
             public int AddMeshParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddNumberParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
@@ -109,6 +151,8 @@ namespace Grasshopper.Kernel
             public int AddPointParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddCurveParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddGenericParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
+            public int AddPlaneParameter(string name, string nickname, string description, GH_ParamAccess access, Rhino.Geometry.Plane @default) { throw new NotSupportedException("facade"); }
+            public int AddParameter(IGH_Param param, string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
         }
 
         public class GH_OutputParamManager
@@ -122,6 +166,8 @@ namespace Grasshopper.Kernel
             public int AddIntegerParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddTextParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddGenericParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
+            public int AddVectorParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
+            public int AddParameter(IGH_Param param, string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
         }
     }
 }

@@ -2,7 +2,21 @@
 // with the real namespaces and signatures; every body throws.
 using System;
 using System.Collections.Generic;
+using System.Drawing;
 using Rhino.Geometry.Collections;
+
+namespace Rhino
+{
+    public class RhinoDoc
+    {
+        internal RhinoDoc() { throw new NotSupportedException("facade"); }
+        public static RhinoDoc ActiveDoc { get { throw new NotSupportedException("facade"); } }
+        public UnitSystem ModelUnitSystem { get { throw new NotSupportedException("facade"); } }
+    }
+
+    // A few of the real values, with their real numbers (the plugin only prints the value it gets).
+    public enum UnitSystem : byte { None = 0, Millimeters = 2, Meters = 4 }
+}
 
 namespace Rhino.Geometry
 {
@@ -20,6 +34,14 @@ namespace Rhino.Geometry
         public double X { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
         public double Y { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
         public double Z { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+    }
+
+    public struct Plane
+    {
+        public static Plane WorldXY { get { throw new NotSupportedException("facade"); } }
+        public Point3d Origin { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        public Vector3d XAxis { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
+        public Vector3d YAxis { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
     }
 
     public struct Line
@@ -46,7 +68,9 @@ namespace Rhino.Geometry
         public MeshVertexList Vertices { get { throw new NotSupportedException("facade"); } }
         public MeshFaceList Faces { get { throw new NotSupportedException("facade"); } }
         public MeshVertexNormalList Normals { get { throw new NotSupportedException("facade"); } }
+        public MeshVertexColorList VertexColors { get { throw new NotSupportedException("facade"); } }
         public bool Compact() { throw new NotSupportedException("facade"); }
+        public Mesh DuplicateMesh() { throw new NotSupportedException("facade"); }
     }
 
     public class Curve : GeometryBase
@@ -80,6 +104,12 @@ namespace Rhino.Geometry.Collections
         public int Count { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
         public Rhino.Geometry.MeshFace this[int index] { get { throw new NotSupportedException("facade"); } set { throw new NotSupportedException("facade"); } }
         public int AddFace(int vertex1, int vertex2, int vertex3, int vertex4) { throw new NotSupportedException("facade"); }
+    }
+
+    public class MeshVertexColorList
+    {
+        internal MeshVertexColorList() { throw new NotSupportedException("facade"); }
+        public bool SetColors(Color[] colors) { throw new NotSupportedException("facade"); }
     }
 
     public class MeshVertexNormalList

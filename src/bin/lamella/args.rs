@@ -71,13 +71,25 @@ pub struct OutArgs {
     pub force: bool,
 }
 
+/// The curve family: its angle θ, or its name.
+#[derive(Args, Debug, Clone, Default)]
+pub struct FamilyFlags {
+    /// Target angle θ between the strips' binormals and the surface normal, in degrees, 0 to 180:
+    /// 0 and 180 are the asymptotic curves (E_asy), 90 the geodesics (E_geo), other angles the
+    /// pseudo-geodesics (E_angle) [default: 60, or the --family's angle].
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
+    pub theta: Option<f64>,
+    /// The curve family by name: asymptotic (θ = 0), geodesic (θ = 90) or pseudo-geodesic (θ from
+    /// --theta, neither 0, 90 nor 180) [default: named by θ].
+    #[arg(long, value_name = "asymptotic|geodesic|pseudo-geodesic")]
+    pub family: Option<String>,
+}
+
 /// Parameters of the field optimisation.
 #[derive(Args, Debug, Clone, Default)]
 pub struct FieldFlags {
-    /// Target angle θ between the strips' binormals and the surface normal, in degrees, 0 to 180
-    /// (90 = geodesics, 0 = asymptotic curves) [default: 60].
-    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
-    pub theta: Option<f64>,
+    #[command(flatten)]
+    pub family: FamilyFlags,
     /// Upper bound on the total number of Levenberg–Marquardt iterations of the field, 1 to
     /// 100000 [default: 400].
     #[arg(long, value_name = "N")]
@@ -85,18 +97,28 @@ pub struct FieldFlags {
 }
 
 /// Where the field optimisation starts (paper Sec. 3.2.2). At most one of these; without any,
-/// the coordinate along the longest bounding-box axis.
+/// a search tries several starts (heights along the surface's principal directions, then guides
+/// traced from each boundary side), runs a short solve from each, judges the level curves each
+/// reaches and continues the best; report.json lists the candidates with their scores.
 #[derive(Args, Debug, Clone, Default)]
 pub struct StartFlags {
     /// Trace this many guide P-curves of angle θ from one side of the boundary (see
     /// --guide-side, --guide-angle) and start from the field that takes the value i on guide i
     /// (Eq. 5–7), 2 to 100 [default: none].
-    #[arg(long, value_name = "N", conflicts_with_all = ["guides_file", "strokes"])]
+    #[arg(long, value_name = "N", conflicts_with_all = ["guides_file", "strokes", "direction", "start_field"])]
     pub guides: Option<usize>,
     /// Start from the guide curves in a guides.json written by `lamella trace` (traced on the same
     /// mesh) [default: none].
-    #[arg(long, value_name = "guides.json", conflicts_with = "strokes")]
+    #[arg(long, value_name = "guides.json", conflicts_with_all = ["strokes", "direction", "start_field"])]
     pub guides_file: Option<PathBuf>,
+    /// Start from the height along this direction (three numbers, any length but not zero): the
+    /// level sets start as the sections orthogonal to it [default: none].
+    #[arg(long, value_name = "X,Y,Z", allow_negative_numbers = true, conflicts_with_all = ["strokes", "start_field"])]
+    pub direction: Option<String>,
+    /// Start from this field: one value per mesh vertex, one per line (field.csv of `field` or
+    /// `design`) [default: none].
+    #[arg(long, value_name = "F.csv", conflicts_with = "strokes")]
+    pub start_field: Option<PathBuf>,
     /// Start from sketched strokes: a JSON file {"strokes": [[[x, y, z], ...], ...]} of at least two
     /// polylines drawn on (within one mean edge length of) the surface, in metres. The level sets
     /// are fitted to them and θ is estimated from them unless --theta is given (Fig. 14)
@@ -130,14 +152,20 @@ pub struct StripFlags {
     /// Strip width in metres (mesh units), > 0 [default: half the mean spacing of the level curves].
     #[arg(long, value_name = "METRES", allow_negative_numbers = true)]
     pub width: Option<f64>,
+    /// Largest angle error of a strip quad, in degrees, between 0 and 180 exclusive: strips off
+    /// by more (or with flipped quads) make the run exit with code 3, "no acceptable family",
+    /// after writing its outputs [default: 2].
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
+    pub tolerance: Option<f64>,
 }
 
 /// Parameters from a TOML file.
 #[derive(Args, Debug, Clone, Default)]
 pub struct ConfigArgs {
-    /// TOML file with any of: mesh, out, theta, max_iterations, strips, width, guides,
-    /// guides_file, strokes, guide_side, guide_angle (same meanings and units as the flags; a flag
-    /// wins over the file) [default: none].
+    /// TOML file with any of: mesh, out, theta, family, max_iterations, strips, width,
+    /// tolerance, guides, guides_file, strokes, direction ([x, y, z]), start_field, guide_side,
+    /// guide_angle (same meanings and units as the flags; a flag wins over the file)
+    /// [default: none].
     #[arg(long, value_name = "design.toml")]
     pub config: Option<PathBuf>,
 }
@@ -171,10 +199,8 @@ pub struct InfoArgs {
 pub struct TraceArgs {
     #[command(flatten)]
     pub mesh: MeshArgs,
-    /// Target angle θ between the guides' binormals and the surface normal, in degrees, 0 to 180
-    /// (90 = geodesics, 0 = asymptotic curves) [default: 60].
-    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
-    pub theta: Option<f64>,
+    #[command(flatten)]
+    pub family: FamilyFlags,
     /// Number of guide curves, 1 to 100 [default: 4].
     #[arg(long, value_name = "N")]
     pub guides: Option<usize>,
@@ -198,9 +224,8 @@ pub struct FieldArgs {
     pub start: StartFlags,
     /// Continue the saved session (session.bin of an earlier `field` or `design` run) up to
     /// --max-iterations in total; its mesh and θ are used, and energies.csv beside it extends
-    /// the history [default: start a new optimisation from the coordinate along the longest
-    /// bounding-box axis].
-    #[arg(long, value_name = "session.bin", conflicts_with_all = ["mesh", "theta", "guides", "guides_file", "strokes"])]
+    /// the history [default: start a new optimisation].
+    #[arg(long, value_name = "session.bin", conflicts_with_all = ["mesh", "theta", "family", "guides", "guides_file", "strokes", "direction", "start_field"])]
     pub resume: Option<PathBuf>,
     #[command(flatten)]
     pub out: OutArgs,
@@ -217,9 +242,8 @@ pub struct StripsArgs {
     /// The field, one value per mesh vertex (field.csv of `field` or `design`).
     #[arg(long = "field", value_name = "field.csv")]
     pub field_csv: PathBuf,
-    /// Target angle θ of the field's curve family, in degrees, 0 to 180 [default: 60].
-    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
-    pub theta: Option<f64>,
+    #[command(flatten)]
+    pub family: FamilyFlags,
     #[command(flatten)]
     pub strips: StripFlags,
     #[command(flatten)]
@@ -248,9 +272,11 @@ pub struct MetricsArgs {
     /// The strips (strips.obj of `strips` or `design`).
     #[arg(long = "strips", value_name = "strips.obj")]
     pub strips_obj: PathBuf,
-    /// Target angle θ the strips were designed for, in degrees, 0 to 180 [default: 60].
+    #[command(flatten)]
+    pub family: FamilyFlags,
+    /// Largest angle error of a strip quad in degrees (the verdict, as for `design`) [default: 2].
     #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
-    pub theta: Option<f64>,
+    pub tolerance: Option<f64>,
     /// Print JSON instead of a table.
     #[arg(long)]
     pub json: bool,

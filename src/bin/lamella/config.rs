@@ -1,6 +1,8 @@
 //! The design parameters in force: flags over a `--config` TOML file over the defaults, checked
 //! against their ranges.
-use crate::args::{ConfigArgs, FieldFlags, GuideSeedingFlags, MeshArgs, OutArgs, StartFlags, StripFlags};
+use crate::args::{ConfigArgs, FamilyFlags, FieldFlags, GuideSeedingFlags, MeshArgs, OutArgs, StartFlags, StripFlags};
+use lamella::mesh::Vec3;
+use lamella::strips::DEFAULT_TOLERANCE_DEGREES;
 use crate::error::{CliError, CliResult};
 use crate::mesh_input::read_text;
 use lamella::input::{clip, clip_words};
@@ -23,12 +25,16 @@ struct ConfigFile {
     mesh: Option<PathBuf>,
     out: Option<PathBuf>,
     theta: Option<f64>,
+    family: Option<String>,
     max_iterations: Option<usize>,
     strips: Option<usize>,
     width: Option<f64>,
+    tolerance: Option<f64>,
     guides: Option<usize>,
     guides_file: Option<PathBuf>,
     strokes: Option<PathBuf>,
+    direction: Option<[f64; 3]>,
+    start_field: Option<PathBuf>,
     guide_side: Option<String>,
     guide_angle: Option<f64>,
 }
@@ -36,8 +42,12 @@ struct ConfigFile {
 /// Where the field optimisation starts (paper Sec. 3.2.2).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Start {
-    /// The coordinate along the longest bounding-box axis.
-    Axis,
+    /// The default start search ([`lamella::initialisation::StartSearch`]).
+    Search,
+    /// The height along a direction.
+    Direction(Vec3),
+    /// A field read from a file, one value per vertex.
+    FieldFile(PathBuf),
     /// This many guide P-curves traced from the boundary (Sec. 3.2.1).
     Guides(usize),
     /// Guide curves saved by `lamella trace`.
@@ -60,9 +70,10 @@ pub struct Settings {
     pub mesh: Option<PathBuf>,
     pub out: PathBuf,
     pub force: bool,
-    /// Target angle θ in degrees.
+    /// Target angle θ in degrees (0 or 180 for the asymptotic family, 90 for the geodesic one).
     pub theta: f64,
-    /// Whether θ was given (flag or file) rather than defaulted; strokes estimate θ otherwise.
+    /// Whether θ was given (flag or file, or fixed by a family name) rather than defaulted;
+    /// strokes estimate θ otherwise.
     pub theta_given: bool,
     pub start: Start,
     pub guide_side: GuideSide,
@@ -72,6 +83,8 @@ pub struct Settings {
     pub strips: usize,
     /// Strip width in mesh units; `None`: half the mean spacing of the level curves.
     pub width: Option<f64>,
+    /// Largest angle error of an acceptable strip quad, degrees.
+    pub tolerance: f64,
 }
 
 /// The flags a command may carry; absent groups stay at their defaults.
@@ -79,6 +92,7 @@ pub struct Settings {
 pub struct Flags<'a> {
     pub mesh: Option<&'a MeshArgs>,
     pub out: Option<&'a OutArgs>,
+    pub family: Option<&'a FamilyFlags>,
     pub field: Option<&'a FieldFlags>,
     pub strips: Option<&'a StripFlags>,
     pub config: Option<&'a ConfigArgs>,
@@ -91,7 +105,10 @@ impl Settings {
             Some(path) => read_config(path)?,
             None => ConfigFile::default(),
         };
-        let theta = flags.field.and_then(|f| f.theta).or(file.theta);
+        let family = flags.family.or(flags.field.map(|f| &f.family));
+        let theta = family.and_then(|f| f.theta).or(file.theta);
+        let name = family.and_then(|f| f.family.clone()).or(file.family.clone());
+        let theta = resolve_family(theta, name.as_deref())?;
         let seeding = flags.start.map(|s| &s.seeding);
         let guide_side = match seeding.and_then(|s| s.guide_side.clone()).or(file.guide_side.clone()) {
             Some(text) => parse_guide_side(&text)?,
@@ -113,6 +130,7 @@ impl Settings {
                 .unwrap_or(DEFAULT_MAX_ITERATIONS),
             strips: flags.strips.and_then(|s| s.strips).or(file.strips).unwrap_or(DEFAULT_STRIPS),
             width: flags.strips.and_then(|s| s.width).or(file.width),
+            tolerance: flags.strips.and_then(|s| s.tolerance).or(file.tolerance).unwrap_or(DEFAULT_TOLERANCE_DEGREES),
         };
         settings.check()?;
         Ok(settings)
@@ -139,23 +157,92 @@ impl Settings {
                 return Err(out_of_range("width", width, "a finite length > 0 m"));
             }
         }
+        check_tolerance(self.tolerance)?;
+        if let Start::Direction(d) = self.start {
+            if !(d.iter().all(|x| x.is_finite()) && d.norm() > 0.0) {
+                return Err(CliError::bad_input(format!("parameter --direction = {},{},{} is not a non-zero finite vector", d.x, d.y, d.z)));
+            }
+        }
         Ok(())
+    }
+}
+
+/// The tolerance of the verdict must lie in (0°, 180°).
+pub fn check_tolerance(tolerance: f64) -> CliResult<()> {
+    if tolerance.is_finite() && tolerance > 0.0 && tolerance < 180.0 {
+        Ok(())
+    } else {
+        Err(out_of_range("tolerance", tolerance, "between 0 and 180 degrees, exclusive"))
+    }
+}
+
+/// θ from `--theta` and `--family` (paper Sec. 3.2.2, Eq. 13): `(Some(θ), true)`-like pairs of
+/// the angle and whether it was given. A family name fixes θ (0 for asymptotic curves, 90 for
+/// geodesics) and must agree with a given θ; `pseudo-geodesic` needs a θ other than 0, 90, 180.
+pub fn resolve_family(theta: Option<f64>, name: Option<&str>) -> CliResult<Option<f64>> {
+    let named = |fixed: f64, other: Option<f64>, label: &str| match theta {
+        Some(t) if t != fixed && Some(t) != other => {
+            Err(CliError::bad_input(format!("--family {label} means θ = {fixed}°, but --theta = {t} was given")))
+        }
+        Some(t) => Ok(Some(t)),
+        None => Ok(Some(fixed)),
+    };
+    match name {
+        None => Ok(theta),
+        Some("asymptotic") => named(0.0, Some(180.0), "asymptotic"),
+        Some("geodesic") => named(90.0, None, "geodesic"),
+        Some("pseudo-geodesic") => match theta {
+            Some(t) if t == 0.0 || t == 90.0 || t == 180.0 => Err(CliError::bad_input(format!(
+                "--family pseudo-geodesic needs a θ other than 0, 90 and 180 (θ = {t}° is the {} family)",
+                if t == 90.0 { "geodesic" } else { "asymptotic" }
+            ))),
+            other => Ok(other),
+        },
+        Some(other) => Err(CliError::bad_input(format!(
+            "parameter --family = {} is not asymptotic, geodesic or pseudo-geodesic",
+            clip(other)
+        ))),
     }
 }
 
 /// The start flags win as a group over the file's start keys; at most one start may be given.
 fn resolve_start(flags: Option<&StartFlags>, file: &ConfigFile) -> CliResult<Start> {
-    let from_flags = flags.map(|f| (f.guides, f.guides_file.clone(), f.strokes.clone()));
-    let (guides, guides_file, strokes) = match from_flags {
-        Some(choice) if choice != (None, None, None) => choice,
-        _ => (file.guides, file.guides_file.clone(), file.strokes.clone()),
+    let mut from_flags = Vec::new();
+    if let Some(f) = flags {
+        from_flags.extend(f.guides.map(Start::Guides));
+        from_flags.extend(f.guides_file.clone().map(Start::GuidesFile));
+        from_flags.extend(f.strokes.clone().map(Start::Strokes));
+        if let Some(text) = &f.direction {
+            from_flags.push(Start::Direction(parse_direction(text)?));
+        }
+        from_flags.extend(f.start_field.clone().map(Start::FieldFile));
+    }
+    let chosen = if from_flags.is_empty() {
+        let mut from_file = Vec::new();
+        from_file.extend(file.guides.map(Start::Guides));
+        from_file.extend(file.guides_file.clone().map(Start::GuidesFile));
+        from_file.extend(file.strokes.clone().map(Start::Strokes));
+        from_file.extend(file.direction.map(|d| Start::Direction(Vec3::from(d))));
+        from_file.extend(file.start_field.clone().map(Start::FieldFile));
+        from_file
+    } else {
+        from_flags
     };
-    match (guides, guides_file, strokes) {
-        (None, None, None) => Ok(Start::Axis),
-        (Some(count), None, None) => Ok(Start::Guides(count)),
-        (None, Some(path), None) => Ok(Start::GuidesFile(path)),
-        (None, None, Some(path)) => Ok(Start::Strokes(path)),
-        _ => Err(CliError::bad_input("give at most one of guides, guides_file and strokes")),
+    match chosen.len() {
+        0 => Ok(Start::Search),
+        1 => Ok(chosen.into_iter().next().unwrap_or(Start::Search)),
+        _ => Err(CliError::bad_input("give at most one of guides, guides_file, strokes, direction and start_field")),
+    }
+}
+
+/// `X,Y,Z` as a vector.
+fn parse_direction(text: &str) -> CliResult<Vec3> {
+    let values: Vec<f64> = text.split(',').map(|v| v.trim().parse::<f64>()).collect::<Result<_, _>>().map_err(|_| {
+        CliError::bad_input(format!("parameter --direction = {} is not three numbers X,Y,Z", clip(text)))
+    })?;
+    match values.as_slice() {
+        [x, y, z] => Ok(Vec3::new(*x, *y, *z)),
+        _ => Err(CliError::bad_input(format!("parameter --direction = {} is not three numbers X,Y,Z", clip(text)))),
     }
 }
 

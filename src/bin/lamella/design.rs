@@ -5,15 +5,15 @@ use crate::args::DesignArgs;
 use crate::config::{Flags, Settings};
 use crate::console::err_line;
 use crate::error::{CliError, CliResult};
-use crate::field_cmd::{field_summary, new_solver, optimise, write_field_files};
+use crate::field_cmd::{family_measure, field_summary, optimise, write_field_files};
 use crate::field_files::HistoryRow;
 use crate::mesh_input::{load_mesh, mesh_name};
 use crate::output_dir::OutputDir;
 use crate::progress::{note, summary, Verbosity};
 use crate::report_json::{self, Timings};
-use crate::start_field::start_field;
+use crate::start_field::start_solver;
 use crate::strip_obj::strip_name;
-use crate::strips_cmd::{build_strips, strips_summary, warning_lines, write_strip_files};
+use crate::strips_cmd::{build_strips, strips_summary, warning_lines, write_strip_files, StripRun};
 use crate::svg::cut_sheet::{cut_sheet_svg, CutPiece};
 use std::time::Instant;
 
@@ -23,6 +23,7 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     let settings = Settings::resolve(Flags {
         mesh: Some(&args.mesh),
         out: Some(&args.out),
+        family: None,
         field: Some(&args.field),
         strips: Some(&args.strips),
         config: Some(&args.config),
@@ -31,20 +32,20 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     let mesh = load_mesh(settings.mesh.as_deref())?;
     let name = mesh_name(settings.mesh.as_deref());
     let out = OutputDir::create(&settings.out, settings.force)?;
-    let start = start_field(&mesh, &settings)?;
-    let theta = start.theta;
     note(
         verbosity,
-        &format!("{name}: {} vertices, {} triangles; θ = {theta}°, {} strips", mesh.vertex_count(), mesh.face_count(), settings.strips),
+        &format!("{name}: {} vertices, {} triangles; θ = {}°, {} strips", mesh.vertex_count(), mesh.face_count(), settings.theta, settings.strips),
     );
-
-    let mut solver = new_solver(&mesh, &start)?;
+    let start = start_solver(&mesh, &settings, verbosity)?;
+    let theta = start.theta;
+    let mut solver = start.solver;
     let mut history = vec![HistoryRow::of(solver.report())];
     optimise(&mut solver, settings.max_iterations, &mut history, verbosity)?;
     let field_seconds = started.elapsed().as_secs_f64();
 
     let strips_started = Instant::now();
-    let run = build_strips(&mesh, &solver.field(), theta, settings.strips, settings.width)?;
+    let run = build_strips(&mesh, &solver.field(), theta, settings.strips, settings.width, settings.tolerance)?;
+    let measure = family_measure(&mesh, &solver, &run.curves)?;
     let strips_seconds = strips_started.elapsed().as_secs_f64();
     if verbosity == Verbosity::Verbose {
         warning_lines(&run).iter().for_each(err_line);
@@ -60,16 +61,26 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     out.write("unrolled.svg", cut_sheet_svg(&pieces))?;
     let timings = Timings { field: field_seconds, strips: strips_seconds, total: started.elapsed().as_secs_f64() };
     let parameters = report_json::parameters(&settings, theta, &name, Some(&start.description));
-    out.write("report.json", report_json::document(&parameters, Some((&solver, &history)), Some(&run), &timings))?;
+    out.write("report.json", report_json::document(&parameters, Some((&solver, &history, &measure)), Some(&run), &timings))?;
     let target = out.target().display().to_string();
     out.commit()?;
     summary(
         verbosity,
         &format!(
             "{}\n{}\ndone in {:.1} s (field {field_seconds:.1} s, strips {strips_seconds:.1} s); wrote {target}/ (surface.obj, field.csv, session.bin, energies.csv, curves.obj, strips.obj, rulings.obj, report.json, unrolled.svg, convergence.svg, preview.svg)",
-            field_summary(&solver),
+            field_summary(&solver, &measure),
             strips_summary(&run),
             started.elapsed().as_secs_f64()
         ),
-    )
+    )?;
+    verdict(&run)
+}
+
+/// Exit code 3 with the verdict's message when the strips miss θ or have flipped quads.
+pub fn verdict(run: &StripRun) -> CliResult<()> {
+    if run.pattern.verdict.is_acceptable() {
+        Ok(())
+    } else {
+        Err(CliError::NoAcceptableFamily(run.pattern.verdict.message()))
+    }
 }

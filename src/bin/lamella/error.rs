@@ -1,5 +1,6 @@
 //! The ways a command fails, and their exit codes: bad input (2), an internal failure or a
-//! failed write to stdout (1), or a closed stdout pipe (0, quietly).
+//! failed write to stdout (1), no acceptable family (3, outputs written), or a closed stdout
+//! pipe (0, quietly).
 use std::fmt;
 
 /// Longest error message printed, in characters (a safety net: every message quotes tokens and
@@ -18,6 +19,9 @@ pub enum CliError {
     /// The reader of stdout closed the pipe (`lamella metrics … | head -c 1`): the command stops
     /// quietly with exit code 0.
     ClosedPipe,
+    /// The computation ran and wrote its outputs, but they miss the asked angle (or have
+    /// flipped quads): exit code 3; the message starts with "no acceptable family".
+    NoAcceptableFamily(String),
 }
 
 impl CliError {
@@ -34,6 +38,7 @@ impl CliError {
         match self {
             CliError::BadInput(_) => 2,
             CliError::Internal(_) | CliError::Write(_) => 1,
+            CliError::NoAcceptableFamily(_) => 3,
             CliError::ClosedPipe => 0,
         }
     }
@@ -60,7 +65,9 @@ impl CliError {
 impl fmt::Display for CliError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            CliError::BadInput(message) | CliError::Internal(message) | CliError::Write(message) => f.write_str(message),
+            CliError::BadInput(message) | CliError::Internal(message) | CliError::Write(message) | CliError::NoAcceptableFamily(message) => {
+                f.write_str(message)
+            }
             CliError::ClosedPipe => f.write_str("standard output was closed"),
         }
     }

@@ -8,18 +8,16 @@ use crate::mesh_input::{load_mesh, mesh_name, read_bytes};
 use crate::output_dir::OutputDir;
 use crate::progress::{note, summary, Progress, Verbosity};
 use crate::report_json::{self, Timings};
-use crate::start_field::{start_field, StartField};
+use crate::start_field::start_solver;
 use crate::svg::convergence::convergence_svg;
-use lamella::field::{FieldError, FieldParams, FieldSolver};
+use lamella::curves::{extract_level_curves, uniform_levels, LevelCurve};
+use lamella::field::{FieldError, FieldSolver};
 use lamella::mesh::TriMesh;
+use lamella::quality::{family_angles, FamilyAngles, DEFAULT_SPACING_EDGES};
 use std::time::Instant;
 
-/// A new pseudo-geodesic field optimisation from `start` with the default schedule.
-pub fn new_solver(mesh: &TriMesh, start: &StartField) -> CliResult<FieldSolver> {
-    let mut params = FieldParams::pseudo_geodesic(start.theta);
-    params.gradient_target = start.gradient_target;
-    FieldSolver::new(mesh, &start.values, params).map_err(field_error)
-}
+/// Level curves the `field` command measures the family on.
+const MEASURED_LEVELS: usize = 20;
 
 /// Runs iterations one at a time until convergence or `max_iterations` in total, appending
 /// each state to `history`.
@@ -47,29 +45,45 @@ pub fn field_error(error: FieldError) -> CliError {
     }
 }
 
-/// Largest measured angle error (degrees) a field may keep without a warning.
-const ANGLE_ERROR_WARNING_DEGREES: f64 = 1.0;
+/// Largest angle error (degrees, along the level curves) a field may keep without a warning.
+const ANGLE_ERROR_WARNING_DEGREES: f64 = 2.0;
 
-/// Description of the field's state: one line, and a warning line when the level curves miss θ
-/// somewhere by more than a degree.
-pub fn field_summary(solver: &FieldSolver) -> String {
+/// The family measure of `curves` (level curves of `mesh`) for the solver's family: along the
+/// curves, resampled every three mean edges, against the smooth surface normal.
+pub fn family_measure(mesh: &TriMesh, solver: &FieldSolver, curves: &[LevelCurve]) -> CliResult<FamilyAngles> {
+    let (low, high) = mesh.bounding_box();
+    family_angles(curves, solver.params().family, DEFAULT_SPACING_EDGES * mesh.mean_edge_length(), (high - low).norm())
+        .map_err(|e| CliError::internal(format!("measuring the level curves: {e}")))
+}
+
+/// Description of the field's state: the optimiser's own figures, then the family as measured
+/// along its level curves, and a warning line when the curves miss θ somewhere by more than 2°.
+pub fn field_summary(solver: &FieldSolver, measure: &FamilyAngles) -> String {
     let r = solver.report();
     let mut text = format!(
-        "field {} after {} iterations: E_angle {:.2e}, angle error max {:.3}° (RMS {:.3}°), {} singular vertices",
+        "field {} after {} iterations: E_angle {:.2e}, {} singular vertices; along the level curves: angle error RMS {:.3}°, max {:.3}°, {:.1} % nearly straight",
         if r.converged { "converged" } else { "stopped" },
         r.iterations,
         r.energies.angle,
-        r.angle_error_max_degrees,
-        r.angle_error_rms_degrees,
-        r.singular_vertices.len()
+        r.singular_vertices.len(),
+        measure.rms_error_degrees,
+        measure.max_error_degrees,
+        100.0 * measure.straight_fraction()
     );
-    if r.angle_error_max_degrees > ANGLE_ERROR_WARNING_DEGREES {
+    if measure.max_error_degrees > ANGLE_ERROR_WARNING_DEGREES {
+        let at = measure.worst.map_or(String::new(), |w| format!(" (at {:.3}, {:.3}, {:.3})", w.point[0], w.point[1], w.point[2]));
         text.push_str(&format!(
-            "\nwarning: the level curves miss θ by up to {:.1}° somewhere: no θ family covers the surface from this start; try another start (--guides with another --guide-angle or --guide-side, --strokes)",
-            r.angle_error_max_degrees
+            "\nwarning: the level curves miss θ by up to {:.1}°{at}: no θ family covers the surface there from this start; the strips may still meet θ (they are optimised on their own), otherwise try another start (--guides with another --guide-angle or --guide-side, --strokes) or θ",
+            measure.max_error_degrees
         ));
     }
     text
+}
+
+/// The level curves of the solver's field at `count` uniform levels.
+pub fn measured_curves(mesh: &TriMesh, field: &[f64], count: usize) -> CliResult<Vec<LevelCurve>> {
+    let levels = uniform_levels(mesh, field, count).map_err(|e| CliError::internal(format!("level curves: {e}")))?;
+    extract_level_curves(mesh, field, &levels).map_err(|e| CliError::internal(format!("level curves: {e}")))
 }
 
 /// Writes the field's files: field.csv, session.bin, energies.csv, convergence.svg.
@@ -86,13 +100,15 @@ pub fn run(args: &FieldArgs) -> CliResult<()> {
     let settings = Settings::resolve(Flags {
         mesh: Some(&args.mesh),
         out: Some(&args.out),
+        family: None,
         field: Some(&args.field),
         config: Some(&args.config),
         strips: None,
         start: Some(&args.start),
     })?;
+    let out = OutputDir::create(&settings.out, settings.force)?;
     let mut start_description = None;
-    let (mut solver, mut history, source) = match &args.resume {
+    let (mut solver, mut history, source, mesh) = match &args.resume {
         Some(path) => {
             let bytes = read_bytes(path)?;
             let solver = FieldSolver::from_bytes(&bytes)
@@ -100,29 +116,29 @@ pub fn run(args: &FieldArgs) -> CliResult<()> {
             let beside = path.with_file_name("energies.csv");
             let mut history = if beside.is_file() { read_energies_csv(&beside)? } else { Vec::new() };
             history.retain(|row| row.iteration <= solver.iterations());
-            (solver, history, format!("session {}", path.display()))
+            let mesh = solver.mesh();
+            (solver, history, format!("session {}", path.display()), mesh)
         }
         None => {
             let mesh = load_mesh(settings.mesh.as_deref())?;
-            let start = start_field(&mesh, &settings)?;
-            let solver = new_solver(&mesh, &start)?;
-            start_description = Some(start.description);
-            let history = vec![HistoryRow::of(solver.report())];
-            (solver, history, mesh_name(settings.mesh.as_deref()))
+            let started = start_solver(&mesh, &settings, verbosity)?;
+            start_description = Some(started.description);
+            let history = vec![HistoryRow::of(started.solver.report())];
+            (started.solver, history, mesh_name(settings.mesh.as_deref()), mesh)
         }
     };
-    let out = OutputDir::create(&settings.out, settings.force)?;
     let theta = solver.params().family.theta_degrees();
     note(verbosity, &format!("field on {source}: θ = {theta}°, from iteration {}", solver.iterations()));
     let field_started = Instant::now();
     optimise(&mut solver, settings.max_iterations, &mut history, verbosity)?;
     let field_seconds = field_started.elapsed().as_secs_f64();
     write_field_files(&out, &solver, &history)?;
+    let measure = family_measure(&mesh, &solver, &measured_curves(&mesh, &solver.field(), MEASURED_LEVELS)?)?;
     let timings = Timings { field: field_seconds, strips: 0.0, total: started.elapsed().as_secs_f64() };
     let parameters = report_json::parameters(&settings, theta, &source, start_description.as_ref());
-    let report = report_json::document(&parameters, Some((&solver, &history)), None, &timings);
+    let report = report_json::document(&parameters, Some((&solver, &history, &measure)), None, &timings);
     out.write("report.json", report)?;
     let target = out.target().display().to_string();
     out.commit()?;
-    summary(verbosity, &format!("{}\nwrote {target}/ (field.csv, session.bin, energies.csv, convergence.svg, report.json)", field_summary(&solver)))
+    summary(verbosity, &format!("{}\nwrote {target}/ (field.csv, session.bin, energies.csv, convergence.svg, report.json)", field_summary(&solver, &measure)))
 }

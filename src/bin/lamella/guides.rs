@@ -6,10 +6,7 @@ use crate::error::{CliError, CliResult};
 use crate::mesh_input::read_text;
 use lamella::input::clip_words;
 use lamella::mesh::{EdgePoint, TriMesh};
-use lamella::tracing::{
-    boundary_segments, evenly_spaced_starts, intersections, IntersectionReport, StopReason, TraceOptions, TracedCurve, Tracer,
-    DEFAULT_CORNER_TURN_DEGREES,
-};
+use lamella::tracing::{intersections, trace_guide_set, IntersectionReport, StopReason, TracedCurve};
 use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -24,39 +21,18 @@ pub struct Guides {
 }
 
 /// Traces `count` P-curves of angle `theta` from evenly spaced points of a side of the outer
-/// boundary, leaving it at `start_angle`.
-///
-/// A curve's side vector `u = n × t` (Sec. 3.1) points to its left. The boundary runs with the
-/// surface on its left, so a curve leaving it into the surface has its left against the
-/// boundary's direction: the guides are numbered against the order of their starts along the
-/// loop, so that the field with value i on guide i grows to each curve's left and its family
-/// has the signed angle θ (not 180° − θ).
+/// boundary, leaving it at `start_angle` (see [`trace_guide_set`]).
 pub fn trace_guides(mesh: &TriMesh, count: usize, side: GuideSide, start_angle: f64, theta: f64) -> CliResult<Guides> {
-    let segments = boundary_segments(mesh, 0, DEFAULT_CORNER_TURN_DEGREES).map_err(|e| CliError::bad_input(format!("guides: {e}")))?;
-    let side = match side {
-        GuideSide::Index(k) => k,
-        GuideSide::Longest => longest_side(mesh, segments.iter().map(|s| s.vertices())),
+    let index = match side {
+        GuideSide::Index(k) => Some(k),
+        GuideSide::Longest => None,
     };
-    let starts = evenly_spaced_starts(mesh, &segments, side, count).map_err(|e| CliError::bad_input(format!("--guide-side {side}: {e}")))?;
-    let tracer = Tracer::new(mesh);
-    let curves = starts
-        .iter()
-        .rev()
-        .enumerate()
-        .map(|(i, start)| {
-            tracer
-                .trace(start, theta, start_angle, &TraceOptions::default())
-                .map_err(|e| CliError::bad_input(format!("guide {i} (from side {side}): {e}")))
-        })
-        .collect::<CliResult<Vec<_>>>()?;
-    Ok(Guides { curves, side, theta, start_angle })
-}
-
-/// Index of the side with the greatest length (the first of equals).
-fn longest_side<'a>(mesh: &TriMesh, sides: impl Iterator<Item = &'a [u32]>) -> usize {
-    let p = mesh.positions();
-    let lengths = sides.map(|v| v.windows(2).map(|w| (p[w[1] as usize] - p[w[0] as usize]).norm()).sum::<f64>());
-    lengths.enumerate().fold((0, f64::NEG_INFINITY), |best, (i, l)| if l > best.1 { (i, l) } else { best }).0
+    let set = trace_guide_set(mesh, count, index, start_angle, theta).map_err(|(guide, e)| match (guide, index) {
+        (Some(i), _) => CliError::bad_input(format!("guide {i}: {e}")),
+        (None, Some(k)) => CliError::bad_input(format!("--guide-side {k}: {e}")),
+        (None, None) => CliError::bad_input(format!("guides: {e}")),
+    })?;
+    Ok(Guides { curves: set.curves, side: set.side, theta, start_angle })
 }
 
 /// Fails with a message naming the first crossing when guides cross (an initial field needs

@@ -1,7 +1,8 @@
 //! `lamella`: the command-line front door of the crate. Without arguments it designs a θ = 60°
 //! rectifying strip pattern on the built-in hall roof into `./lamella-out/`; subcommands run the
 //! pipeline's steps one at a time on the same files. Exit codes: 0 success (or stdout closed by
-//! its reader), 2 bad input, 1 internal failure or a failed write to stdout.
+//! its reader), 2 bad input, 1 internal failure or a failed write to stdout, 3 no acceptable
+//! family (outputs written, but the strips miss θ).
 
 mod args;
 mod config;
@@ -27,7 +28,7 @@ mod unroll;
 
 use args::{Cli, Command};
 use clap::Parser;
-use error::CliResult;
+use error::{CliError, CliResult};
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
@@ -35,6 +36,10 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(&cli) {
         Ok(()) => ExitCode::SUCCESS,
+        Err(CliError::NoAcceptableFamily(message)) => {
+            console::err_line(format!("lamella: {message}"));
+            ExitCode::from(3)
+        }
         Err(error) => {
             if let Some(message) = error.message() {
                 console::err_line(format!("lamella: error: {message}"));

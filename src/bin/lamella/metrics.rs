@@ -1,13 +1,13 @@
 //! `lamella metrics`: the Table 4 measures of the strips in a strips.obj, measured against the
 //! surface (closest-point normals and distances).
 use crate::args::MetricsArgs;
-use crate::config::{check_theta, DEFAULT_THETA};
+use crate::config::{check_theta, check_tolerance, resolve_family, DEFAULT_THETA};
 use crate::console::out_line;
 use crate::error::{CliError, CliResult};
 use crate::mesh_input::load_mesh;
 use crate::strip_obj::{read_strips_obj, StripShape};
 use lamella::mesh::{TriMesh, Vec3};
-use lamella::strips::{unroll, PatternMetrics, StripGeometry, StripMetrics, SurfaceProjector};
+use lamella::strips::{unroll, PatternMetrics, StripGeometry, StripMetrics, SurfaceProjector, Verdict, DEFAULT_TOLERANCE_DEGREES};
 use serde_json::json;
 use std::fmt::Write as _;
 
@@ -29,7 +29,15 @@ fn measure(projector: &SurfaceProjector, shape: &StripShape, theta: f64, diagona
     let normals: Vec<Vec3> = surface.iter().map(|s| s.normal).collect();
     let distances: Vec<f64> = surface.iter().map(|s| s.distance).collect();
     let unrolling = unroll(&centre, &offsets);
-    let geometry = StripGeometry { centre: &centre, rulings: &rulings, normals: &normals, distances: &distances, unrolling: &unrolling };
+    let geometry = StripGeometry {
+        centre: &centre,
+        rulings: &rulings,
+        normals: &normals,
+        distances: &distances,
+        unrolling: &unrolling,
+        offsets: &offsets,
+        width: unrolling.width(),
+    };
     Ok(StripMetrics::measure(&geometry, theta, diagonal))
 }
 
@@ -39,17 +47,20 @@ fn diagonal(mesh: &TriMesh) -> f64 {
 }
 
 pub fn run(args: &MetricsArgs) -> CliResult<()> {
-    let theta = args.theta.unwrap_or(DEFAULT_THETA);
+    let theta = resolve_family(args.family.theta, args.family.family.as_deref())?.unwrap_or(DEFAULT_THETA);
     check_theta(theta)?;
+    let tolerance = args.tolerance.unwrap_or(DEFAULT_TOLERANCE_DEGREES);
+    check_tolerance(tolerance)?;
     let mesh = load_mesh(args.mesh.mesh.as_deref())?;
     let shapes = read_strips_obj(&args.strips_obj)?;
     let projector = SurfaceProjector::new(&mesh);
     let diagonal = diagonal(&mesh);
     let metrics: Vec<StripMetrics> = shapes.iter().map(|s| measure(&projector, s, theta, diagonal)).collect::<CliResult<_>>()?;
     let overall = PatternMetrics::from_strips(metrics.iter());
+    let verdict = Verdict::of_metrics(&metrics, tolerance);
     if args.json {
         let strips: Vec<_> = shapes.iter().zip(&metrics).map(|(s, m)| json!({ "name": s.name, "metrics": m })).collect();
-        let document = json!({ "theta_degrees": theta, "strips": strips, "overall": overall });
+        let document = json!({ "theta_degrees": theta, "strips": strips, "overall": overall, "verdict": verdict, "acceptable": verdict.is_acceptable() });
         return out_line(serde_json::to_string_pretty(&document).unwrap_or_default());
     }
     let mut table = format!("{:<12} {:>10} {:>12} {:>11} {:>11} {:>11} {:>9} {:>7}\n", "strip", "length m", "max diff θ°", "e_straight", "E_planar", "max planar", "Appro %", "flipped");
@@ -65,5 +76,6 @@ pub fn run(args: &MetricsArgs) -> CliResult<()> {
         "{:<12} {:>10} {:>12.4} {:>11.2e} {:>11.2e} {:>11.2e} {:>9.4} {:>7}",
         "overall", "", overall.max_diff_theta_degrees, overall.max_e_straight, overall.e_planar, overall.max_planar, overall.appro_percent, overall.flipped_quads
     );
+    let _ = write!(table, "\nstrip planes: max angle error {:.3}°; {}", overall.max_quad_angle_error_degrees, verdict.message());
     out_line(table)
 }

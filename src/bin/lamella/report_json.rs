@@ -5,6 +5,7 @@ use crate::field_files::HistoryRow;
 use crate::strip_obj::strip_name;
 use crate::strips_cmd::StripRun;
 use lamella::field::FieldSolver;
+use lamella::quality::FamilyAngles;
 use serde_json::{json, Map, Value};
 
 /// Wall-clock seconds per stage.
@@ -22,11 +23,12 @@ pub fn parameters(settings: &Settings, theta: f64, mesh: &str, start: Option<&Va
         "max_iterations": settings.max_iterations,
         "strips": settings.strips,
         "width_m": settings.width,
+        "tolerance_degrees": settings.tolerance,
         "start": start,
     })
 }
 
-fn field_section(solver: &FieldSolver, history: &[HistoryRow]) -> Value {
+fn field_section(solver: &FieldSolver, history: &[HistoryRow], measure: &FamilyAngles) -> Value {
     let r = solver.report();
     let rows: Vec<Value> = history
         .iter()
@@ -46,9 +48,18 @@ fn field_section(solver: &FieldSolver, history: &[HistoryRow]) -> Value {
     json!({
         "iterations": r.iterations,
         "converged": r.converged,
+        "family": solver.params().family,
         "angle_error_max_degrees": r.angle_error_max_degrees,
         "angle_error_rms_degrees": r.angle_error_rms_degrees,
         "singular_vertices": r.singular_vertices.len(),
+        "level_curves": {
+            "measured_points": measure.measured,
+            "spacing_m": measure.spacing,
+            "angle_error_rms_degrees": measure.rms_error_degrees,
+            "angle_error_max_degrees": measure.max_error_degrees,
+            "straight_fraction": measure.straight_fraction(),
+            "worst": measure.worst,
+        },
         "history": rows,
     })
 }
@@ -74,6 +85,8 @@ fn strips_section(run: &StripRun) -> Value {
                 "max_planar": m.max_planar,
                 "appro_percent": m.appro_percent,
                 "flipped_quads": m.flipped_quads,
+                "max_quad_angle_error_degrees": m.max_quad_angle_error_degrees,
+                "max_ruling_over_width": m.max_ruling_over_width,
                 "warnings": s.warnings.iter().map(ToString::to_string).collect::<Vec<_>>(),
             })
         })
@@ -100,17 +113,22 @@ fn strips_section(run: &StripRun) -> Value {
             "max_planar": m.max_planar,
             "appro_percent": m.appro_percent,
             "flipped_quads": m.flipped_quads,
+            "max_quad_angle_error_degrees": m.max_quad_angle_error_degrees,
+            "max_ruling_over_width": m.max_ruling_over_width,
         },
+        "verdict": run.pattern.verdict,
+        "acceptable": run.pattern.verdict.is_acceptable(),
+        "verdict_message": run.pattern.verdict.message(),
     })
 }
 
 /// The whole report, pretty-printed.
-pub fn document(parameters: &Value, field: Option<(&FieldSolver, &[HistoryRow])>, strips: Option<&StripRun>, timings: &Timings) -> String {
+pub fn document(parameters: &Value, field: Option<(&FieldSolver, &[HistoryRow], &FamilyAngles)>, strips: Option<&StripRun>, timings: &Timings) -> String {
     let mut root = Map::new();
     root.insert("lamella_version".into(), json!(env!("CARGO_PKG_VERSION")));
     root.insert("parameters".into(), parameters.clone());
-    if let Some((solver, history)) = field {
-        root.insert("field".into(), field_section(solver, history));
+    if let Some((solver, history, measure)) = field {
+        root.insert("field".into(), field_section(solver, history, measure));
     }
     if let Some(run) = strips {
         root.insert("strips".into(), strips_section(run));

@@ -1,42 +1,53 @@
-//! Where the field optimisation starts (paper Sec. 3.2.2): the coordinate along the longest
-//! bounding-box axis, guide P-curves traced from the boundary or read from guides.json (Eq. 5–7),
-//! or sketched strokes with the target angle estimated from them (Fig. 14).
+//! Where the field optimisation starts (paper Sec. 3.2.2): by default a search over several
+//! starts that keeps the one whose level curves come nearest the asked family
+//! ([`StartSearch`]); or a start the user chose: the height along a direction, a field from a
+//! file, guide P-curves traced from the boundary or read from guides.json (Eq. 5–7), or sketched
+//! strokes with the target angle estimated from them (Fig. 14).
 use crate::config::{check_theta, Settings, Start};
+use crate::console::err_line;
 use crate::error::{CliError, CliResult};
+use crate::field_cmd::field_error;
+use crate::field_files::read_field_csv;
 use crate::guides::{crossings, read_guides_json, require_no_crossings, trace_guides};
+use crate::progress::{note, Verbosity};
 use crate::strokes_file::read_strokes;
-use lamella::initialisation::{estimate_target_angle, field_from_guide_curves, field_from_strokes, GuideCurveOptions, InitialisationError, StrokeOptions};
+use lamella::field::{FieldParams, FieldSolver};
+use lamella::initialisation::{
+    estimate_target_angle, field_from_guide_curves, field_from_strokes, GuideCurveOptions, InitialisationError, SearchError, SearchOptions, StartSearch,
+    StrokeOptions,
+};
 use lamella::mesh::{EdgePoint, TriMesh};
 use serde_json::{json, Value};
+use std::path::Path;
+use std::time::Instant;
 
-/// The initial field and what the optimisation should aim at.
-pub struct StartField {
-    pub values: Vec<f64>,
+/// A field optimisation ready to be stepped, and how it was started.
+pub struct Started {
+    pub solver: FieldSolver,
     /// Target angle θ in degrees (estimated from strokes unless given).
     pub theta: f64,
-    /// Target ‖∇F‖ of `E_grad` suggested by guide curves (their spacing); `None` keeps the
-    /// initial field's mean.
-    pub gradient_target: Option<f64>,
-    /// How the start was made, for report.json.
+    /// How the start was made (for a search: every candidate with its score), for report.json.
     pub description: Value,
 }
 
-/// The coordinate along the longest axis of the bounding box (on the hall roof, x: its level
-/// sets are the arches across the hall).
-pub fn axis_field(mesh: &TriMesh) -> Vec<f64> {
-    let (low, high) = mesh.bounding_box();
-    let axis = (high - low).iamax();
-    mesh.positions().iter().map(|p| p[axis]).collect()
-}
-
-pub fn start_field(mesh: &TriMesh, settings: &Settings) -> CliResult<StartField> {
+/// The solver for the settings' start on `mesh`.
+pub fn start_solver(mesh: &TriMesh, settings: &Settings, verbosity: Verbosity) -> CliResult<Started> {
+    let chosen = |values: Vec<f64>, theta: f64, gradient_target: Option<f64>, description: Value| {
+        let mut params = FieldParams::pseudo_geodesic(theta);
+        params.gradient_target = gradient_target;
+        let solver = FieldSolver::new(mesh, &values, params).map_err(field_error)?;
+        Ok(Started { solver, theta, description })
+    };
     match &settings.start {
-        Start::Axis => Ok(StartField {
-            values: axis_field(mesh),
-            theta: settings.theta,
-            gradient_target: None,
-            description: json!({ "kind": "bounding-box axis" }),
-        }),
+        Start::Search => search(mesh, settings.theta, verbosity),
+        Start::Direction(d) => {
+            let values = mesh.positions().iter().map(|p| p.dot(d)).collect();
+            chosen(values, settings.theta, None, json!({ "kind": "height along a direction", "direction": [d.x, d.y, d.z] }))
+        }
+        Start::FieldFile(path) => {
+            let values = read_field_for(mesh, path)?;
+            chosen(values, settings.theta, None, json!({ "kind": "field file", "file": path.display().to_string() }))
+        }
         Start::Guides(count) => {
             let guides = trace_guides(mesh, *count, settings.guide_side, settings.guide_angle, settings.theta)?;
             require_no_crossings(&crossings(mesh, &guides))?;
@@ -48,38 +59,99 @@ pub fn start_field(mesh: &TriMesh, settings: &Settings) -> CliResult<StartField>
                 "start_angle_degrees": guides.start_angle,
                 "lengths_m": guides.curves.iter().map(|c| c.length()).collect::<Vec<_>>(),
             });
-            from_guides(mesh, &curves, settings.theta, description)
+            let (values, target) = from_guides(mesh, &curves)?;
+            chosen(values, settings.theta, Some(target), description)
         }
         Start::GuidesFile(path) => {
             let (file_theta, curves) = read_guides_json(path)?;
             let theta = if settings.theta_given { settings.theta } else { file_theta };
             check_theta(theta)?;
-            from_guides(mesh, &curves, theta, json!({ "kind": "guides file", "file": path.display().to_string(), "guides": curves.len() }))
+            let (values, target) = from_guides(mesh, &curves)?;
+            chosen(values, theta, Some(target), json!({ "kind": "guides file", "file": path.display().to_string(), "guides": curves.len() }))
         }
         Start::Strokes(path) => {
             let strokes = read_strokes(path)?;
             let fitted = field_from_strokes(mesh, &strokes, &StrokeOptions::default()).map_err(|e| start_error(mesh, "strokes", e))?;
             let estimate = estimate_target_angle(mesh, &fitted.field, &fitted.samples).map_err(|e| start_error(mesh, "strokes", e))?;
             let theta = if settings.theta_given { settings.theta } else { estimate };
-            Ok(StartField {
-                values: fitted.field,
-                theta,
-                gradient_target: None,
-                description: json!({
-                    "kind": "strokes",
-                    "file": path.display().to_string(),
-                    "strokes": strokes.len(),
-                    "estimated_theta_degrees": estimate,
-                    "fit_iterations": fitted.iterations,
-                }),
-            })
+            let description = json!({
+                "kind": "strokes",
+                "file": path.display().to_string(),
+                "strokes": strokes.len(),
+                "estimated_theta_degrees": estimate,
+                "fit_iterations": fitted.iterations,
+            });
+            chosen(fitted.field, theta, None, description)
         }
     }
 }
 
-fn from_guides(mesh: &TriMesh, curves: &[Vec<EdgePoint>], theta: f64, description: Value) -> CliResult<StartField> {
+/// The default start search, reported on stderr (one line, every candidate under `--verbose`).
+fn search(mesh: &TriMesh, theta: f64, verbosity: Verbosity) -> CliResult<Started> {
+    let started = Instant::now();
+    let mut search = StartSearch::new(mesh, FieldParams::pseudo_geodesic(theta), SearchOptions::default()).map_err(field_error)?;
+    loop {
+        let more = search.step().map_err(field_error)?;
+        if verbosity == Verbosity::Verbose {
+            if let Some(c) = search.candidates().last() {
+                let outcome = match (&c.rejected, c.score) {
+                    (Some(reason), _) => format!("rejected: {reason}"),
+                    (None, Some(score)) => format!("score {score:.2} (RMS {:.2}°, max {:.2}°)", c.rms_error_degrees, c.max_error_degrees),
+                    (None, None) => "not scored".into(),
+                };
+                err_line(format_args!("start candidate {}: {}: {outcome}", search.candidates().len() - 1, c.kind.describe()));
+            }
+        }
+        if !more {
+            break;
+        }
+    }
+    let candidates: Vec<Value> = search.candidates().iter().map(|c| json!({
+        "start": c.kind.describe(),
+        "kind": c.kind,
+        "score": c.score,
+        "rms_error_degrees": c.rms_error_degrees,
+        "max_error_degrees": c.max_error_degrees,
+        "straight_fraction": c.straight_fraction,
+        "singular_vertices": c.singular_vertices,
+        "rejected": c.rejected,
+    })).collect();
+    let winner = search.winner();
+    let chosen = winner.map(|w| search.candidates()[w].kind.describe());
+    note(
+        verbosity,
+        &format!(
+            "start search: {} candidates in {:.1} s; {}",
+            candidates.len(),
+            started.elapsed().as_secs_f64(),
+            chosen.as_deref().map_or("none acceptable".to_string(), |c| format!("continuing from {c}"))
+        ),
+    );
+    let description = json!({ "kind": "search", "winner": winner, "candidates": candidates });
+    let solver = search.into_solver().map_err(|e| match e {
+        SearchError::NoStart { .. } => CliError::bad_input(format!("{e}; give a start (--guides, --direction, --strokes, --start-field)")),
+        SearchError::Field(error) => field_error(error),
+    })?;
+    Ok(Started { solver, theta, description })
+}
+
+fn from_guides(mesh: &TriMesh, curves: &[Vec<EdgePoint>]) -> CliResult<(Vec<f64>, f64)> {
     let guide = field_from_guide_curves(mesh, curves, &GuideCurveOptions::default()).map_err(|e| start_error(mesh, "guides", e))?;
-    Ok(StartField { values: guide.field, theta, gradient_target: Some(guide.gradient_target), description })
+    Ok((guide.field, guide.gradient_target))
+}
+
+/// The field of `path`, checked against the mesh.
+pub fn read_field_for(mesh: &TriMesh, path: &Path) -> CliResult<Vec<f64>> {
+    let field = read_field_csv(path)?;
+    if field.len() != mesh.vertex_count() {
+        return Err(CliError::bad_input(format!(
+            "{}: {} values for a mesh of {} vertices",
+            path.display(),
+            field.len(),
+            mesh.vertex_count()
+        )));
+    }
+    Ok(field)
 }
 
 /// Initialisation errors are bad input. A singular linear system comes from the mesh (the

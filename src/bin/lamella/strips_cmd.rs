@@ -1,10 +1,10 @@
 //! `lamella strips`: level curves of the field at equally spaced values, resampled to the mesh's
 //! edge length, and the rectifying strips along them (paper Sec. 3.4).
-use crate::args::{FieldFlags, StripsArgs};
+use crate::args::StripsArgs;
 use crate::config::{Flags, Settings};
 use crate::console::err_line;
 use crate::error::{CliError, CliResult};
-use crate::field_files::read_field_csv;
+use crate::start_field::read_field_for;
 use crate::mesh_input::{load_mesh, mesh_name};
 use crate::output_dir::OutputDir;
 use crate::progress::{note, summary, Verbosity};
@@ -47,8 +47,9 @@ fn mean_gradient_norm(mesh: &TriMesh, field: &[f64]) -> f64 {
     }
 }
 
-/// Builds `count` strips on `field` (one value per vertex, checked by the caller).
-pub fn build_strips(mesh: &TriMesh, field: &[f64], theta: f64, count: usize, width: Option<f64>) -> CliResult<StripRun> {
+/// Builds `count` strips on `field` (one value per vertex, checked by the caller), judged with
+/// `tolerance` degrees.
+pub fn build_strips(mesh: &TriMesh, field: &[f64], theta: f64, count: usize, width: Option<f64>, tolerance: f64) -> CliResult<StripRun> {
     let levels = uniform_levels(mesh, field, count).map_err(|e| CliError::bad_input(format!("level curves: {e}")))?;
     let step = match levels.as_slice() {
         [a, b, ..] => b - a,
@@ -65,8 +66,8 @@ pub fn build_strips(mesh: &TriMesh, field: &[f64], theta: f64, count: usize, wid
     };
     let curves = extract_level_curves(mesh, field, &levels).map_err(|e| CliError::bad_input(format!("level curves: {e}")))?;
     let curves = resample_all(&curves, mesh.mean_edge_length()).map_err(|e| CliError::internal(format!("resampling level curves: {e}")))?;
-    let pattern = rectifying_strips(mesh, &curves, &StripParams::new(theta, width))
-        .map_err(|e| CliError::bad_input(format!("strips: {e}")))?;
+    let params = StripParams { tolerance_degrees: tolerance, ..StripParams::new(theta, width) };
+    let pattern = rectifying_strips(mesh, &curves, &params).map_err(|e| CliError::bad_input(format!("strips: {e}")))?;
     Ok(StripRun { curves, pattern, width, spacing })
 }
 
@@ -81,7 +82,8 @@ pub fn strips_summary(run: &StripRun) -> String {
     let range = if m.strip_count > 0 { format!(" ({shortest:.2} m to {longest:.2} m)") } else { String::new() };
     format!(
         "{} strips, {} curves skipped, {warned} with warnings (--verbose lists them); width {:.3} m; total length {total:.2} m{range}\n\
-         Table 4: max diff θ {:.3}°, max e_straight {:.2e}, max planarity {:.2e}, Appro {:.3} %, flipped quads {}",
+         Table 4: max diff θ {:.3}°, max e_straight {:.2e}, max planarity {:.2e}, Appro {:.3} %, flipped quads {}; \
+         strip planes: max angle error {:.3}°, longest ruling {:.2} strip widths",
         m.strip_count,
         run.pattern.skipped.len(),
         run.width,
@@ -89,7 +91,9 @@ pub fn strips_summary(run: &StripRun) -> String {
         m.max_e_straight,
         m.max_planar,
         m.appro_percent,
-        m.flipped_quads
+        m.flipped_quads,
+        m.max_quad_angle_error_degrees,
+        m.max_ruling_over_width
     )
 }
 
@@ -108,28 +112,14 @@ pub fn write_strip_files(out: &OutputDir, mesh: &TriMesh, run: &StripRun) -> Cli
     out.write("preview.svg", preview_svg(mesh, &run.pattern))
 }
 
-/// The field of `path`, checked against the mesh.
-pub fn read_field_for(mesh: &TriMesh, path: &std::path::Path) -> CliResult<Vec<f64>> {
-    let field = read_field_csv(path)?;
-    if field.len() != mesh.vertex_count() {
-        return Err(CliError::bad_input(format!(
-            "{}: {} values for a mesh of {} vertices",
-            path.display(),
-            field.len(),
-            mesh.vertex_count()
-        )));
-    }
-    Ok(field)
-}
-
 pub fn run(args: &StripsArgs) -> CliResult<()> {
     let started = Instant::now();
     let verbosity = Verbosity::from(args.verbosity);
-    let field_flags = FieldFlags { theta: args.theta, max_iterations: None };
     let settings = Settings::resolve(Flags {
         mesh: Some(&args.mesh),
         out: Some(&args.out),
-        field: Some(&field_flags),
+        family: Some(&args.family),
+        field: None,
         strips: Some(&args.strips),
         config: Some(&args.config),
         start: None,
@@ -138,7 +128,7 @@ pub fn run(args: &StripsArgs) -> CliResult<()> {
     let field = read_field_for(&mesh, &args.field_csv)?;
     let out = OutputDir::create(&settings.out, settings.force)?;
     note(verbosity, &format!("strips: {} level curves at θ = {}°", settings.strips, settings.theta));
-    let run = build_strips(&mesh, &field, settings.theta, settings.strips, settings.width)?;
+    let run = build_strips(&mesh, &field, settings.theta, settings.strips, settings.width, settings.tolerance)?;
     if verbosity == Verbosity::Verbose {
         warning_lines(&run).iter().for_each(err_line);
     }
@@ -149,5 +139,6 @@ pub fn run(args: &StripsArgs) -> CliResult<()> {
     out.write("report.json", report_json::document(&parameters, None, Some(&run), &timings))?;
     let target = out.target().display().to_string();
     out.commit()?;
-    summary(verbosity, &format!("{}\nwrote {target}/ (curves.obj, strips.obj, rulings.obj, preview.svg, report.json)", strips_summary(&run)))
+    summary(verbosity, &format!("{}\nwrote {target}/ (curves.obj, strips.obj, rulings.obj, preview.svg, report.json)", strips_summary(&run)))?;
+    crate::design::verdict(&run)
 }

@@ -14,12 +14,12 @@ pub const DEFAULT_TRACE_GUIDES: usize = 4;
 
 pub fn run(args: &TraceArgs) -> CliResult<()> {
     let verbosity = Verbosity::from(args.verbosity);
-    let field_flags = crate::args::FieldFlags { theta: args.theta, max_iterations: None };
     let start_flags = StartFlags { guides: args.guides, seeding: args.seeding.clone(), ..StartFlags::default() };
     let settings = Settings::resolve(Flags {
         mesh: Some(&args.mesh),
         out: Some(&args.out),
-        field: Some(&field_flags),
+        family: Some(&args.family),
+        field: None,
         config: Some(&args.config),
         start: Some(&start_flags),
         strips: None,

@@ -1,0 +1,446 @@
+//! The default start: which initial field leads to the asked family on a surface nobody has
+//! prepared guides or strokes for.
+//!
+//! The level-set optimisation (Sec. 3.2.2) converges to a family near its start, and a poor
+//! start leads to a poor or degenerate family: the coordinate along a cylinder's circumference
+//! has the rulings as level sets, which are straight, so every P-curve condition holds in the
+//! limit and the optimiser stays there (`../shared/docs/fidelity-notes.md`). The search therefore
+//! tries several starts, runs a short solve from each (a few iterations cost milliseconds each),
+//! judges the level curves each one reaches as an outside reviewer would
+//! ([`crate::quality::family_angles`]), rejects degenerate families, and hands the best one on.
+//!
+//! Candidates, in this order (the order settles ties, so the search is deterministic):
+//! 1. heights along directions in the principal plane of the surface (the two largest axes of
+//!    the vertex positions' covariance), at `directions` evenly spaced angles, each with both
+//!    signs (`F` and `−F` lead to the two mirror families of pseudo-geodesics; for geodesics
+//!    and asymptotic curves they are the same family and only one is tried);
+//! 2. only if no height is acceptable: guide P-curves traced from each side of the outer boundary
+//!    (Sec. 3.2.1) at each of `guide_angles`, turned into a field by Eq. 5–7.
+//!
+//! A candidate's score is the family's RMS angle error plus a quarter of its largest error (in
+//! degrees, along the curves), plus penalties for nearly straight pieces and singular vertices;
+//! lower is better. A candidate is rejected when more than half of its measured curve is nearly
+//! straight (a degenerate pseudo-geodesic family), when its level curves cannot be measured, or
+//! when its short solve fails; a start whose level curves are straight lines to begin with (90 %
+//! or more) is rejected without a solve.
+
+use std::collections::VecDeque;
+
+use nalgebra::{Matrix3, SymmetricEigen};
+use serde::{Deserialize, Serialize};
+
+use super::guide_curves::{field_from_guide_curves, GuideCurveOptions};
+use crate::curves::{extract_level_curves, uniform_levels};
+use crate::field::{Family, FieldError, FieldParams, FieldSolver};
+use crate::mesh::{TriMesh, Vec3};
+use crate::quality::{family_angles, FamilyAngles};
+use crate::tracing::{boundary_segments, intersections, trace_guide_set, DEFAULT_CORNER_TURN_DEGREES};
+
+/// Settings of the search.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SearchOptions {
+    /// Iterations of each candidate's short solve, ≥ 1. Default 20.
+    pub probe_iterations: usize,
+    /// Iterations each warm-up stage of the field's schedule keeps in a short solve (at most its
+    /// own), so that the probe reaches the final weights. Default 3: with the default schedule a
+    /// probe then spends 14 of its 20 iterations at the final weights, enough to tell where a
+    /// start leads (on a cylinder the height along the axis, which ends on the catenaries, then
+    /// ranks first; after the full 8 + 8 warm-up iterations it ranked last).
+    pub probe_warm_up: usize,
+    /// Level curves extracted to judge a candidate, ≥ 2. Default 12.
+    pub levels: usize,
+    /// Resampling step of the curve measure, in mean edge lengths, > 0. Default 3.
+    pub spacing_edges: f64,
+    /// Height directions in the principal plane, ≥ 1. Default 4 (every 45°).
+    pub directions: usize,
+    /// Start angles (degrees, in (0, 180)) of the guide candidates. Default 60°, 90°, 120°.
+    pub guide_angles: Vec<f64>,
+    /// Guides per guide candidate, ≥ 2. Default 4.
+    pub guides: usize,
+    /// A candidate scoring at most this is good enough to skip the guide candidates. Default 3.
+    pub acceptable_score: f64,
+}
+
+impl Default for SearchOptions {
+    fn default() -> Self {
+        SearchOptions {
+            probe_iterations: 20,
+            probe_warm_up: 3,
+            levels: 12,
+            spacing_edges: 3.0,
+            directions: 4,
+            guide_angles: vec![60.0, 90.0, 120.0],
+            guides: 4,
+            acceptable_score: 3.0,
+        }
+    }
+}
+
+/// How a candidate's initial field is made.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum StartKind {
+    /// `F = ±x·d`: the height along a direction `d` of the principal plane.
+    Height { direction: [f64; 3], negated: bool },
+    /// Guides traced from boundary side `side` at `start_angle_degrees` (Eq. 5–7).
+    Guides { side: usize, start_angle_degrees: f64 },
+}
+
+/// One candidate start and how its short solve ended.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Candidate {
+    pub kind: StartKind,
+    /// Lower is better; `None` until probed or when rejected.
+    pub score: Option<f64>,
+    /// The curve measure after the short solve (RMS, max, straight fraction), when measured.
+    pub rms_error_degrees: f64,
+    pub max_error_degrees: f64,
+    pub straight_fraction: f64,
+    pub singular_vertices: usize,
+    /// Why the candidate was rejected.
+    pub rejected: Option<String>,
+}
+
+impl StartKind {
+    /// A short description for reports.
+    pub fn describe(&self) -> String {
+        match self {
+            StartKind::Height { direction: d, negated } => {
+                format!("{}height along ({:.3}, {:.3}, {:.3})", if *negated { "minus " } else { "" }, d[0], d[1], d[2])
+            }
+            StartKind::Guides { side, start_angle_degrees } => format!("guides from boundary side {side} at {start_angle_degrees}°"),
+        }
+    }
+}
+
+/// The search, stepped one candidate at a time (each step runs one short solve).
+pub struct StartSearch {
+    mesh: TriMesh,
+    params: FieldParams,
+    options: SearchOptions,
+    /// One solver restarted for every candidate, so the problem is prepared once.
+    solver: Option<FieldSolver>,
+    pending: VecDeque<Pending>,
+    candidates: Vec<Candidate>,
+    /// The best candidate so far: its index and its field after the short solve.
+    best: Option<(usize, f64, Vec<f64>)>,
+    guides_queued: bool,
+}
+
+/// A candidate not probed yet: its kind, initial field and `E_grad` target.
+struct Pending {
+    kind: StartKind,
+    field: Result<Vec<f64>, String>,
+    gradient_target: Option<f64>,
+}
+
+impl StartSearch {
+    /// Prepares the search for a field of `params` (its family, weights and schedule; its
+    /// gradient target is replaced by each candidate's) on `mesh`.
+    pub fn new(mesh: &TriMesh, mut params: FieldParams, options: SearchOptions) -> Result<StartSearch, FieldError> {
+        validate(&options)?;
+        params.family = params.family.by_name();
+        let mut search = StartSearch {
+            mesh: mesh.clone(),
+            params,
+            options,
+            solver: None,
+            pending: VecDeque::new(),
+            candidates: Vec::new(),
+            best: None,
+            guides_queued: false,
+        };
+        search.queue_heights();
+        Ok(search)
+    }
+
+    /// Probes the next candidate. Returns `Ok(true)` while candidates remain. Errors only for a
+    /// failure that no other candidate could avoid (e.g. an invalid θ); a candidate whose own
+    /// solve fails is rejected and the search goes on.
+    pub fn step(&mut self) -> Result<bool, FieldError> {
+        if self.pending.is_empty() && !self.guides_queued && !self.has_acceptable() {
+            self.queue_guides();
+        }
+        let Some(next) = self.pending.pop_front() else { return Ok(false) };
+        let index = self.candidates.len();
+        let mut candidate = Candidate {
+            kind: next.kind,
+            score: None,
+            rms_error_degrees: 0.0,
+            max_error_degrees: 0.0,
+            straight_fraction: 0.0,
+            singular_vertices: 0,
+            rejected: None,
+        };
+        let field = next.field.and_then(|field| self.reject_straight_start(&field).map_or(Ok(field), Err));
+        match field {
+            Err(reason) => candidate.rejected = Some(reason),
+            Ok(field) => match self.probe(&field, next.gradient_target)? {
+                Err(reason) => candidate.rejected = Some(reason),
+                Ok((measure, singular, probed)) => {
+                    candidate.rms_error_degrees = measure.rms_error_degrees;
+                    candidate.max_error_degrees = measure.max_error_degrees;
+                    candidate.straight_fraction = measure.straight_fraction();
+                    candidate.singular_vertices = singular;
+                    match self.score(&measure, singular) {
+                        Err(reason) => candidate.rejected = Some(reason),
+                        Ok(score) => {
+                            candidate.score = Some(score);
+                            if self.best.as_ref().is_none_or(|(_, best, _)| score < *best) {
+                                self.best = Some((index, score, probed));
+                            }
+                        }
+                    }
+                }
+            },
+        }
+        self.candidates.push(candidate);
+        Ok(!self.pending.is_empty() || (!self.guides_queued && !self.has_acceptable()))
+    }
+
+    /// Every candidate probed so far, in order.
+    pub fn candidates(&self) -> &[Candidate] {
+        &self.candidates
+    }
+
+    /// Index (into [`Self::candidates`]) of the best candidate so far.
+    pub fn winner(&self) -> Option<usize> {
+        self.best.as_ref().map(|(i, _, _)| *i)
+    }
+
+    /// Probes every remaining candidate.
+    pub fn run(&mut self) -> Result<(), FieldError> {
+        while self.step()? {}
+        Ok(())
+    }
+
+    /// The solver for the winner: restarted from the field its short solve reached, with the
+    /// final weights of `params` (its warm-up is behind it), ready to be stepped to convergence.
+    /// `Err(NoStart)` names every candidate's reason when all were rejected.
+    pub fn into_solver(mut self) -> Result<FieldSolver, SearchError> {
+        let Some((_, _, field)) = self.best.take() else {
+            let reasons = self.candidates.iter().map(|c| format!("{}: {}", c.kind.describe(), c.rejected.as_deref().unwrap_or("not probed"))).collect();
+            return Err(SearchError::NoStart { reasons });
+        };
+        let mut params = self.params.clone();
+        params.schedule.clear();
+        params.gradient_target = None;
+        let mut solver = match self.solver.take() {
+            Some(solver) => solver,
+            None => FieldSolver::new(&self.mesh, &field, params.clone()).map_err(SearchError::Field)?,
+        };
+        solver.restart(&field, params).map_err(SearchError::Field)?;
+        Ok(solver)
+    }
+
+    fn has_acceptable(&self) -> bool {
+        self.best.as_ref().is_some_and(|(_, score, _)| *score <= self.options.acceptable_score)
+    }
+
+    fn is_pseudo_geodesic(&self) -> bool {
+        matches!(self.params.family, Family::PseudoGeodesic { .. })
+    }
+
+    fn queue_heights(&mut self) {
+        let [first, second] = principal_plane(&self.mesh);
+        let signs: &[bool] = if self.is_pseudo_geodesic() { &[false, true] } else { &[false] };
+        for k in 0..self.options.directions {
+            let angle = std::f64::consts::PI * k as f64 / self.options.directions as f64;
+            let d = first * angle.cos() + second * angle.sin();
+            for &negated in signs {
+                let sign = if negated { -1.0 } else { 1.0 };
+                let field = self.mesh.positions().iter().map(|p| sign * p.dot(&d)).collect();
+                self.pending.push_back(Pending { kind: StartKind::Height { direction: [d.x, d.y, d.z], negated }, field: Ok(field), gradient_target: None });
+            }
+        }
+    }
+
+    fn queue_guides(&mut self) {
+        self.guides_queued = true;
+        let sides = boundary_segments(&self.mesh, 0, DEFAULT_CORNER_TURN_DEGREES).map_or(0, |s| s.len());
+        let theta = self.params.family.theta_degrees();
+        for side in 0..sides {
+            for &start_angle in &self.options.guide_angles {
+                let kind = StartKind::Guides { side, start_angle_degrees: start_angle };
+                let (field, gradient_target) = match guide_field(&self.mesh, self.options.guides, side, start_angle, theta) {
+                    Ok((field, target)) => (Ok(field), Some(target)),
+                    Err(reason) => (Err(reason), None),
+                };
+                self.pending.push_back(Pending { kind, field, gradient_target });
+            }
+        }
+    }
+
+    /// Runs the short solve from `field` and measures where it ends: `Ok(Err(reason))` rejects
+    /// the candidate.
+    #[allow(clippy::type_complexity)]
+    fn probe(&mut self, field: &[f64], gradient_target: Option<f64>) -> Result<Result<(FamilyAngles, usize, Vec<f64>), String>, FieldError> {
+        let mut params = self.params.clone();
+        params.gradient_target = gradient_target;
+        for stage in &mut params.schedule {
+            stage.iterations = stage.iterations.min(self.options.probe_warm_up);
+        }
+        params.schedule.retain(|stage| stage.iterations > 0);
+        let restarted = if let Some(solver) = self.solver.as_mut() {
+            solver.restart(field, params)
+        } else {
+            FieldSolver::new(&self.mesh, field, params).map(|solver| self.solver = Some(solver))
+        };
+        if let Err(error) = restarted {
+            return match error {
+                FieldError::InvalidParameter { .. } => Err(error),
+                other => Ok(Err(format!("cannot start: {other}"))),
+            };
+        }
+        // Invariant: set just above.
+        let solver = self.solver.as_mut().expect("solver prepared");
+        let report = match solver.step(self.options.probe_iterations) {
+            Ok(report) => report,
+            Err(error) => return Ok(Err(format!("short solve failed: {error}"))),
+        };
+        let probed = solver.field();
+        Ok(self.measure(&probed).map(|measure| (measure, report.singular_vertices.len(), probed)))
+    }
+
+    /// A pseudo-geodesic start whose level curves are already nearly all straight (the rulings of
+    /// a developable surface, say) stays on them: every P-curve condition holds there in the
+    /// limit, so no solve moves it. Rejected without a solve; `None` otherwise.
+    fn reject_straight_start(&self, field: &[f64]) -> Option<String> {
+        if !self.is_pseudo_geodesic() {
+            return None;
+        }
+        let measure = self.measure(field).ok()?;
+        (measure.measured + measure.straight > 0 && measure.straight_fraction() > STRAIGHT_START_FRACTION).then(|| {
+            format!("degenerate: {:.0} % of its level curves are straight lines from the start", 100.0 * measure.straight_fraction())
+        })
+    }
+
+    /// The family measure of `field`'s level curves.
+    fn measure(&self, field: &[f64]) -> Result<FamilyAngles, String> {
+        let levels = uniform_levels(&self.mesh, field, self.options.levels).map_err(|e| format!("no level curves: {e}"))?;
+        let curves = extract_level_curves(&self.mesh, field, &levels).map_err(|e| format!("no level curves: {e}"))?;
+        let (low, high) = self.mesh.bounding_box();
+        let spacing = self.options.spacing_edges * self.mesh.mean_edge_length();
+        family_angles(&curves, self.params.family, spacing, (high - low).norm()).map_err(|e| format!("level curves not measurable: {e}"))
+    }
+
+    fn score(&self, measure: &FamilyAngles, singular: usize) -> Result<f64, String> {
+        if measure.measured == 0 {
+            return Err("no level curve could be measured".into());
+        }
+        let straight = measure.straight_fraction();
+        if self.is_pseudo_geodesic() && straight > MAX_STRAIGHT_FRACTION {
+            return Err(format!(
+                "degenerate: {:.0} % of the level curves are nearly straight, where a pseudo-geodesic has no binormal",
+                100.0 * straight
+            ));
+        }
+        let singular_fraction = singular as f64 / self.mesh.vertex_count() as f64;
+        Ok(measure.rms_error_degrees + 0.25 * measure.max_error_degrees + STRAIGHT_PENALTY * straight + SINGULAR_PENALTY * singular_fraction)
+    }
+}
+
+/// What [`search_start`] found: the solver to continue, every candidate and the winner.
+pub struct SearchOutcome {
+    /// Restarted from the winner's short solve with the final weights: step it to convergence.
+    pub solver: FieldSolver,
+    pub candidates: Vec<Candidate>,
+    /// Index into `candidates`.
+    pub winner: usize,
+}
+
+/// Runs the whole search for a field of `params` on `mesh` (see [`StartSearch`]).
+pub fn search_start(mesh: &TriMesh, params: FieldParams, options: SearchOptions) -> Result<SearchOutcome, SearchError> {
+    let mut search = StartSearch::new(mesh, params, options).map_err(SearchError::Field)?;
+    search.run().map_err(SearchError::Field)?;
+    let candidates = search.candidates().to_vec();
+    let winner = search.winner();
+    let solver = search.into_solver()?;
+    // Invariant: into_solver succeeds only with a winner.
+    Ok(SearchOutcome { solver, candidates, winner: winner.unwrap_or(0) })
+}
+
+/// Above this fraction of straight level-curve points a pseudo-geodesic start is rejected unsolved.
+const STRAIGHT_START_FRACTION: f64 = 0.9;
+/// Above this fraction of nearly straight measured points a pseudo-geodesic family is degenerate.
+const MAX_STRAIGHT_FRACTION: f64 = 0.5;
+/// Score added per unit fraction of nearly straight points (degrees).
+const STRAIGHT_PENALTY: f64 = 10.0;
+/// Score added per unit fraction of singular vertices (degrees).
+const SINGULAR_PENALTY: f64 = 100.0;
+
+/// Why no start could be found.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SearchError {
+    /// Every candidate was rejected; one reason per candidate.
+    NoStart { reasons: Vec<String> },
+    Field(FieldError),
+}
+
+impl std::fmt::Display for SearchError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            SearchError::NoStart { reasons } => write!(f, "no candidate start leads to a family: {}", reasons.join("; ")),
+            SearchError::Field(error) => write!(f, "{error}"),
+        }
+    }
+}
+
+impl std::error::Error for SearchError {}
+
+fn validate(options: &SearchOptions) -> Result<(), FieldError> {
+    let invalid = |name: &'static str, message: &str| Err(FieldError::InvalidParameter { name, message: message.into() });
+    if options.probe_iterations == 0 {
+        return invalid("probe_iterations", "must be ≥ 1");
+    }
+    if options.levels < 2 {
+        return invalid("levels", "must be ≥ 2");
+    }
+    if !(options.spacing_edges.is_finite() && options.spacing_edges > 0.0) {
+        return invalid("spacing_edges", "must be finite and > 0");
+    }
+    if options.directions == 0 {
+        return invalid("directions", "must be ≥ 1");
+    }
+    if options.guides < 2 {
+        return invalid("guides", "must be ≥ 2");
+    }
+    if options.guide_angles.iter().any(|a| !(a.is_finite() && *a > 0.0 && *a < 180.0)) {
+        return invalid("guide_angles", "each must lie in (0°, 180°)");
+    }
+    if !options.acceptable_score.is_finite() {
+        return invalid("acceptable_score", "must be finite");
+    }
+    Ok(())
+}
+
+/// The two largest principal axes of the vertex positions (unit vectors, each oriented to have a
+/// non-negative largest component, so the result does not depend on the eigen solver's signs).
+fn principal_plane(mesh: &TriMesh) -> [Vec3; 2] {
+    let n = mesh.vertex_count() as f64;
+    let mean: Vec3 = mesh.positions().iter().sum::<Vec3>() / n;
+    let mut covariance = Matrix3::zeros();
+    for p in mesh.positions() {
+        let d = p - mean;
+        covariance += d * d.transpose();
+    }
+    let eigen = SymmetricEigen::new(covariance);
+    let mut order = [0usize, 1, 2];
+    order.sort_by(|&a, &b| eigen.eigenvalues[b].total_cmp(&eigen.eigenvalues[a]));
+    let axis = |k: usize| {
+        let v: Vec3 = eigen.eigenvectors.column(order[k]).into();
+        if v[v.iamax()] < 0.0 { -v } else { v }
+    };
+    [axis(0), axis(1)]
+}
+
+/// The field of `count` guides from boundary side `side` at `start_angle`, with its `E_grad`
+/// target; `Err(reason)` when they cannot be traced, cross, or give no field.
+fn guide_field(mesh: &TriMesh, count: usize, side: usize, start_angle: f64, theta: f64) -> Result<(Vec<f64>, f64), String> {
+    let set = trace_guide_set(mesh, count, Some(side), start_angle, theta).map_err(|(_, e)| format!("cannot trace guides: {e}"))?;
+    if !intersections(mesh, &set.curves).is_intersection_free() {
+        return Err("the traced guides cross".into());
+    }
+    let points: Vec<_> = set.curves.iter().map(|c| c.points().to_vec()).collect();
+    let guided = field_from_guide_curves(mesh, &points, &GuideCurveOptions::default()).map_err(|e| format!("no field from the guides: {e}"))?;
+    Ok((guided.field, guided.gradient_target))
+}

@@ -1,0 +1,7 @@
+//! Judging results as an outside reviewer would (the optimiser's own energies are no proof):
+//! curve families measured along the curves at the scale of a few edges against the smooth
+//! surface normal ([`family_angles`]).
+
+mod family;
+
+pub use family::{family_angles, CurveAngles, FamilyAngles, WorstPoint, DEFAULT_SPACING_EDGES};
