@@ -172,7 +172,10 @@ fn caller_sizes_of_the_c_abi_fail_with_a_status_instead_of_aborting() {
         at_limit.iterations_per_round = 0;
         at_limit.final_iterations = LML_MAX_STRIP_ITERATIONS;
         at_limit.polish_iterations = 1;
-        assert_eq!(lml_strips_new(curves, &at_limit, &mut strips), LmlStatus::Ok, "{}", last_error());
+        // Built (a few iterations need not give an acceptable family, which is not a refusal).
+        let status = lml_strips_new(curves, &at_limit, &mut strips);
+        assert!(matches!(status, LmlStatus::Ok | LmlStatus::NoAcceptableFamily), "{status:?}: {}", last_error());
+        assert!(!strips.is_null());
         lml_strips_free(strips);
         lml_curves_free(curves);
     }
@@ -267,7 +270,7 @@ fn long_tokens_and_long_problem_lists_are_cut() {
     let message = assert_bad_input(&dir.0, &["strips", "--mesh", "roof.obj", "--field", "field.csv", "--out", "s", "--quiet"], &["line 1", "…"]);
     assert!(message.len() < 400, "{} bytes", message.len());
     std::fs::write(dir.path("strokes.json"), format!("{{\"{token}\": 1}}")).expect("write");
-    let message = assert_bad_input(&dir.0, &["design", "--mesh", "roof.obj", "--strokes", "strokes.json", "--out", "d"], &["strokes.json", "…"]);
+    let message = assert_bad_input(&dir.0, &["design", "--mesh", "roof.obj", "--strokes", "strokes.json", "--out", "d", "--quiet"], &["strokes.json", "…"]);
     assert!(message.len() < 600, "{} bytes", message.len());
 
     // 400,000 unused vertices and one triangle: 400,000 problems.
