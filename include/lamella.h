@@ -83,10 +83,35 @@
 // `LmlCandidate::kind`: guides traced from boundary side `side` at `start_angle_degrees`.
 #define LML_START_GUIDES 1
 
+// Most levels one `lml_curves_new` / `lml_curves_new_uniform` call accepts. (A literal, so
+// that the header can show it; equal to the library's limit.)
+#define LML_MAX_LEVELS 10000
+
+// Most points the polylines of one `lml_curves_new` / `lml_curves_new_uniform` call may get
+// by resampling (`spacing` > 0). (A literal, equal to the library's limit.)
+#define LML_MAX_CURVE_POINTS 4000000
+
+// Most binormal-strip rounds (`LmlStripParams.binormal_rounds`). (A literal, so that the header
+// can show it; equal to the library's limit.)
+#define LML_MAX_STRIP_ROUNDS 32
+
+// Most iterations of one strip stage (`LmlStripParams.iterations_per_round`,
+// `final_iterations`, `polish_iterations`); with `LML_MAX_STRIP_ROUNDS` a strip runs at most
+// 17500 iterations. (A literal, equal to the library's limit.)
+#define LML_MAX_STRIP_ITERATIONS 500
+
+// Largest `LmlTraceOptions.max_points`. (A literal, so that the header can show it; equal to
+// the library's limit.)
+#define LML_MAX_TRACE_POINTS 10000000
+
 // The default corner threshold in degrees: a boundary vertex where the boundary turns by at
 // least this much splits a loop into segments. (A literal, so that the header can show it;
 // equal to the library's default.)
 #define LML_DEFAULT_CORNER_TURN_DEGREES 30.0
+
+// Most start points one `lml_boundary_starts` call returns. (A literal, so that the header can
+// show it; equal to the library's limit.)
+#define LML_MAX_STARTS 10000
 
 // Result of an `lml_*` call. `LML_STATUS_OK`, `LML_STATUS_MORE`, `LML_STATUS_CONVERGED` and
 // `LML_STATUS_NO_ACCEPTABLE_FAMILY` are successes (≥ 0: the outputs are valid); every failure
@@ -113,7 +138,7 @@ enum LmlStatus
   LML_STATUS_INVALID_ARGUMENT = -1,
   // The triangles or coordinates do not form a valid mesh: non-finite coordinates, indices
   // out of range, repeated indices, zero-area faces, isolated vertices, non-manifold edges
-  // or vertices, inconsistent orientation, malformed OBJ lines.
+  // or vertices, inconsistent orientation, folded faces, slivers, malformed OBJ lines.
   LML_STATUS_INVALID_MESH = -2,
   // The mesh is valid but not a single topological disk (possibly with holes), which the
   // method requires (paper Sec. 7): closed, several components, handles.
@@ -121,7 +146,8 @@ enum LmlStatus
   // The scalar field has no usable level curves (it is constant or its gradient vanishes).
   LML_STATUS_SINGULAR_FIELD = -4,
   // The optimisation did not converge: `lml_field_solve` ran out of iterations, or an
-  // iteration failed numerically (non-finite residuals, no damped factorisation).
+  // iteration failed numerically (non-finite residuals, no damped factorisation; the message
+  // then names the vertices with the largest residuals).
   LML_STATUS_DID_NOT_CONVERGE = -5,
   // A caller-owned output buffer is NULL or too small; `*needed` holds the required count.
   LML_STATUS_BUFFER_TOO_SMALL = -6,
@@ -304,13 +330,16 @@ typedef struct LmlStripWeights {
 // fields as needed. Lengths are in the mesh's unit, angles in degrees. (No padding: the four
 // 32-bit fields come first.)
 typedef struct LmlStripParams {
-  // Binormal-strip stage: rounds of (project onto the surface, optimise). Default 8.
+  // Binormal-strip stage: rounds of (project onto the surface, optimise), 0 to
+  // `LML_MAX_STRIP_ROUNDS` (32). Default 8.
   uint32_t binormal_rounds;
-  // Levenberg–Marquardt iterations per binormal round and in the first rectifying round. Default 15.
+  // Levenberg–Marquardt iterations per binormal round and in the first rectifying round, 0 to
+  // `LML_MAX_STRIP_ITERATIONS` (500). Default 15.
   uint32_t iterations_per_round;
-  // Iterations of the final rectifying round. Default 60.
+  // Iterations of the final rectifying round, 0 to `LML_MAX_STRIP_ITERATIONS`. Default 60.
   uint32_t final_iterations;
-  // Iterations of the closing polish (positions held, rulings solved for planar quads). Default 30.
+  // Iterations of the closing polish (positions held, rulings solved for planar quads), 0 to
+  // `LML_MAX_STRIP_ITERATIONS`. Default 30.
   uint32_t polish_iterations;
   // Target angle θ between binormal and surface normal, in [0, 180]: the θ of the field the
   // curves come from.
@@ -410,7 +439,8 @@ typedef struct LmlSkippedCurve {
 typedef struct LmlTraceOptions {
   // Stop a curve once it is at least this long; `INFINITY` for no limit (default). > 0.
   double max_length;
-  // Stop a curve once it has this many points (≥ 2; default 100000).
+  // Stop a curve once it has this many points (2 to `LML_MAX_TRACE_POINTS` = 10000000;
+  // default 100000).
   uint64_t max_points;
   // A root of the tracing equation (paper Eq. 4) is accepted if the angle it realises is
   // within this many degrees of θ (0 < tolerance < 90; default 2).
@@ -539,7 +569,9 @@ size_t lml_debug_live_handles(void);
 // Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL `out`, NULL array with a non-zero
 // count, count overflow); `LML_STATUS_INVALID_MESH` (no vertices or faces, NaN/infinite
 // coordinate, index out of range, repeated index, zero-area face, isolated vertex,
-// non-manifold edge or vertex, inconsistent orientation); `LML_STATUS_NOT_A_DISK` (several
+// non-manifold edge or vertex, inconsistent orientation, a fold: two neighbouring faces whose
+// normals are more than 120° apart, e.g. an inverted triangle; a sliver: a face with less than
+// 1e-8 times the area of a neighbouring face); `LML_STATUS_NOT_A_DISK` (several
 // components, closed surfaces, handles). The message names the vertex, face or edge.
 LmlStatus lml_mesh_new(const double *xyz,
                        size_t vertex_count,
@@ -548,14 +580,16 @@ LmlStatus lml_mesh_new(const double *xyz,
                        struct LmlMesh **out);
 
 // Reads and validates a Wavefront OBJ file (`v` and `f` statements; polygons are fanned into
-// triangles; texture and normal indices are ignored).
+// triangles; texture and normal indices are ignored). Files larger than 512 MiB are refused
+// (the size is checked first; a device or pipe is read up to that limit).
 //
 // - `path`: NUL-terminated UTF-8 file path.
 // - `out`: receives the new mesh, owned by the caller; set to NULL on failure.
 //
 // Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL or non-UTF-8 path, unreadable
-// file); `LML_STATUS_INVALID_MESH` (malformed line, or any mesh problem of `lml_mesh_new`,
-// with its 1-based OBJ line); `LML_STATUS_NOT_A_DISK`.
+// file, a directory, a file over 512 MiB); `LML_STATUS_INVALID_MESH` (malformed line (the
+// offending token is quoted, clipped to 80 characters), or any mesh problem of
+// `lml_mesh_new`, with its 1-based OBJ line); `LML_STATUS_NOT_A_DISK`.
 LmlStatus lml_mesh_read_obj(const char *path, struct LmlMesh **out);
 
 // Releases a mesh. NULL is accepted and ignored. Fields created from the mesh keep working
@@ -603,15 +637,17 @@ LmlStatus lml_field_params_default(LmlFamily family,
 // Starts a field optimisation whose level sets should form the family of `params`.
 //
 // - `mesh`: the surface; the session keeps its own copy, so the mesh may be freed afterwards.
-// - `initial_field`: `n` doubles, one value per mesh vertex (in vertex order), not constant;
-//   e.g. a height function whose level curves roughly follow the wanted direction. Copied.
+// - `initial_field`: `n` doubles, one value per mesh vertex (in vertex order), not constant,
+//   each finite with magnitude at most 1e100; e.g. a height function whose level curves
+//   roughly follow the wanted direction. Copied.
 // - `params`: filled by `lml_field_params_default` and possibly edited. Copied.
 // - `out`: receives the new session, owned by the caller (release with `lml_field_free`);
 //   set to NULL on failure.
 //
 // Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `n` ≠ vertex count,
-// non-finite value (the message names the vertex), parameter out of range (named));
-// `LML_STATUS_SINGULAR_FIELD` (constant field, no level curves).
+// a non-finite value or one beyond ±1e100 (the message names the vertex and the value),
+// parameter out of range (named)); `LML_STATUS_SINGULAR_FIELD` (constant field, no level
+// curves).
 LmlStatus lml_field_new(const struct LmlMesh *mesh,
                         const double *initial_field,
                         size_t n,
@@ -771,8 +807,13 @@ LmlStatus lml_field_save(const struct LmlField *field,
 // them). `out` receives the new session, owned by the caller (release with `lml_field_free`);
 // set to NULL on failure.
 //
+// Every restored quantity is checked: parameters as in `lml_field_new` (and at most 100 damped
+// trials per iteration), scale factors normal and positive, every value finite, the field
+// within ±1e100 and the mesh valid once un-scaled, counters and damping in range.
+//
 // Returns `LML_STATUS_OK`; `LML_STATUS_CORRUPT_DATA` (empty, truncated, damaged or
-// inconsistent bytes, or another format version: the message says which);
+// inconsistent bytes, a restored quantity out of range, or another format version: the
+// message says which);
 // `LML_STATUS_INVALID_ARGUMENT` (NULL `out`, NULL `bytes` with a non-zero length).
 LmlStatus lml_field_load(const uint8_t *bytes, size_t length, struct LmlField **out);
 
@@ -781,19 +822,22 @@ LmlStatus lml_field_load(const uint8_t *bytes, size_t length, struct LmlField **
 // - `field`: the session; its current field is used (converged or not). The curves keep their
 //   own reference to the surface, so the session may be freed or stepped on afterwards.
 // - `levels`: `level_count` field values (in the scale of the initial field), each finite and
-//   inside [min F, max F] of the current field. Copied. Each level may give several polylines
+//   inside [min F, max F] of the current field; `level_count` at most `LML_MAX_LEVELS`
+//   (10000). Copied. Each level may give several polylines
 //   (open ones from boundary to boundary first, then closed loops), or none when it only
 //   touches the surface in a point.
 // - `spacing`: 0 keeps the polylines' own vertices (one per crossed mesh edge); > 0 resamples
 //   each polyline at equal arc-length steps as close to `spacing` (a length) as its length
 //   allows, keeping the end points of open ones. Strips use these vertices, so `spacing`
-//   sets their quad length.
+//   sets their quad length. All polylines together may get at most `LML_MAX_CURVE_POINTS`
+//   (4000000) points: a smaller spacing is refused before anything is allocated.
 // - `out`: receives the new curves, owned by the caller (release with `lml_curves_free`); set
 //   to NULL on failure.
 //
-// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `level_count` 0,
-// a non-finite level (its index is named) or one outside the field's range (the range is
-// given), `spacing` negative or not finite); `LML_STATUS_SINGULAR_FIELD` (the field is
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `level_count` 0 or
+// above `LML_MAX_LEVELS`, a non-finite level (its index is named) or one outside the field's
+// range (the range is given), `spacing` negative, not finite or so small that the polylines
+// would exceed `LML_MAX_CURVE_POINTS` points); `LML_STATUS_SINGULAR_FIELD` (the field is
 // constant).
 LmlStatus lml_curves_new(const struct LmlField *field,
                          const double *levels,
@@ -803,10 +847,12 @@ LmlStatus lml_curves_new(const struct LmlField *field,
 
 // Like `lml_curves_new` at `count` levels spread uniformly over the current field's range
 // [min F, max F], the extremes left out: `min F + k (max F − min F) / (count + 1)`,
-// k = 1 … `count`. Read the values back with `lml_curves_levels`.
+// k = 1 … `count`, `count` at most `LML_MAX_LEVELS` (10000). Read the values back with
+// `lml_curves_levels`.
 //
-// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `count` 0, `spacing`
-// negative or not finite); `LML_STATUS_SINGULAR_FIELD` (the field is constant).
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `count` 0 or above
+// `LML_MAX_LEVELS`, `spacing` negative, not finite or too small as in `lml_curves_new`);
+// `LML_STATUS_SINGULAR_FIELD` (the field is constant).
 LmlStatus lml_curves_new_uniform(const struct LmlField *field,
                                  size_t count,
                                  double spacing,
@@ -902,7 +948,8 @@ LmlStatus lml_strip_params_default(double theta_degrees, double width, struct Lm
 // built: `lml_last_error_message()` names the strips and the worst point and what to try,
 // `lml_strips_verdict` gives the numbers); `LML_STATUS_INVALID_ARGUMENT` (NULL pointer; width
 // not finite or ≤ 0, θ outside [0, 180], tolerance outside (0, 180), a weight negative or not
-// finite (the parameter is named)).
+// finite, an iteration count above `LML_MAX_STRIP_ROUNDS` / `LML_MAX_STRIP_ITERATIONS` (the
+// parameter is named)).
 LmlStatus lml_strips_new(const struct LmlCurves *curves,
                          const struct LmlStripParams *params,
                          struct LmlStrips **out);
@@ -1068,13 +1115,15 @@ LmlStatus lml_boundary_segment_count(const struct LmlMesh *mesh,
 // interior on the left, seen from the side the normals point to); pass them to
 // `lml_guides_trace`.
 //
+// `count` is 1 to `LML_MAX_STARTS` (10000), checked before anything is allocated.
+//
 // Two-call pattern: `*needed` is always set to `count` (when the arguments are valid); if
 // `out` is NULL or `capacity` (in points) is smaller, nothing is copied and
 // `LML_STATUS_BUFFER_TOO_SMALL` is returned. The buffer stays owned by the caller.
 //
 // Returns `LML_STATUS_OK`; `LML_STATUS_BUFFER_TOO_SMALL`; `LML_STATUS_INVALID_ARGUMENT` (NULL
 // pointer, `loop_index` or `segment_index` out of range (the count is given),
-// `corner_turn_degrees` not in [0, 180], `count` 0).
+// `corner_turn_degrees` not in [0, 180], `count` 0 or above `LML_MAX_STARTS`).
 LmlStatus lml_boundary_starts(const struct LmlMesh *mesh,
                               uint32_t loop_index,
                               double corner_turn_degrees,
@@ -1126,7 +1175,7 @@ LmlStatus lml_boundary_start_nearest(const struct LmlMesh *mesh,
 // `options` (see `lml_guides_stops`); it has at least two points.
 //
 // Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `count` 0, an option
-// out of range (named), θ or α out of range, or start `i` invalid: a vertex out of range, not a
+// out of range (named; e.g. `max_points` above `LML_MAX_TRACE_POINTS`), θ or α out of range, or start `i` invalid: a vertex out of range, not a
 // boundary edge, `t` outside [0, 1], or no first segment leaves it at α into the surface; the
 // message names `starts[i]`).
 LmlStatus lml_guides_trace(const struct LmlMesh *mesh,

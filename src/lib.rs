@@ -6,11 +6,13 @@
 //! sketched strokes, and the automatic design);
 //! its level [`curves`]; the rectifying developable [`strips`] along them with their flat
 //! unrollings; the outside reviewer's measures of the results in [`quality`]; the C ABI in
-//! [`ffi`]; procedural [`surfaces`] for tests and the demo.
+//! [`ffi`]; procedural [`surfaces`] for tests and the demo; [`input`]: the size limit of input
+//! files and the bounds on text quoted in error messages.
 pub mod curves;
 pub mod ffi;
 pub mod field;
 pub mod initialisation;
+pub mod input;
 pub mod mesh;
 pub mod quality;
 pub mod solver;

@@ -4,19 +4,7 @@
 
 mod cli_support;
 
-use cli_support::{lamella, small_roof, stderr, stdout, Scratch};
-use std::path::Path;
-
-/// Runs `args` in `dir` and checks exit code 2 with a single stderr line containing every `needle`.
-fn assert_bad_input(dir: &Path, args: &[&str], needles: &[&str]) {
-    let output = lamella(dir, args);
-    let message = stderr(&output);
-    assert_eq!(output.status.code(), Some(2), "{args:?}: {message}");
-    assert_eq!(message.trim_end().lines().count(), 1, "{args:?}: one line, got {message}");
-    for needle in needles {
-        assert!(message.contains(needle), "{args:?}: `{needle}` not in {message}");
-    }
-}
+use cli_support::{assert_bad_input, lamella, small_roof, stderr, stdout, Scratch};
 
 /// Two triangles with one wrongly oriented, a face repeating a vertex and an unused vertex.
 const INVALID_MESH: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 5 5 5\nf 1 2 3\nf 2 3 4\nf 1 1 2\n";

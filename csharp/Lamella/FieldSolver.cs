@@ -6,11 +6,15 @@ namespace Lamella
     /// <summary>
     /// A field optimisation session (<c>LmlField</c>): a scalar field on a copy of the mesh whose level curves
     /// should form the family of its <see cref="FieldParams"/>, stepped until converged, saved and restored.
-    /// Use from one thread at a time.
+    /// Every native call on the session holds the session's lock, so calls from several threads run one after another
+    /// (in an unspecified order) instead of racing on the native state.
     /// </summary>
     public sealed class FieldSolver : IDisposable
     {
-        internal readonly FieldHandle Handle;
+        private readonly FieldHandle Handle;
+
+        /// <summary>Held around every native call that reads or changes this session.</summary>
+        private readonly object gate = new object();
 
         private FieldSolver(FieldHandle handle)
         {
@@ -26,6 +30,12 @@ namespace Lamella
             if (mesh == null) throw new ArgumentNullException(nameof(mesh));
             if (initialField == null) throw new ArgumentNullException(nameof(initialField));
             Native.Check(NativeMethods.lml_field_new(mesh.Handle, initialField, Native.Size(initialField.Length), ref parameters, out Handle));
+        }
+
+        /// <summary>Runs <paramref name="call"/> on the native handle while holding the session's lock (for the other wrappers that read the session).</summary>
+        internal T Locked<T>(Func<FieldHandle, T> call)
+        {
+            lock (gate) return call(Handle);
         }
 
         /// <summary>Restores a session from bytes written by <see cref="Save"/>; it continues bit for bit as the original would.</summary>
@@ -44,8 +54,8 @@ namespace Lamella
         public FieldReport Step(int maxIterations)
         {
             if (maxIterations < 0) throw new ArgumentOutOfRangeException(nameof(maxIterations));
-            FieldReport report;
-            Native.Check(NativeMethods.lml_field_step(Handle, (uint)maxIterations, out report));
+            var report = default(FieldReport);
+            Native.Check(Locked(h => NativeMethods.lml_field_step(h, (uint)maxIterations, out report)));
             return report;
         }
 
@@ -53,8 +63,8 @@ namespace Lamella
         public FieldReport Solve(int maxIterations)
         {
             if (maxIterations < 0) throw new ArgumentOutOfRangeException(nameof(maxIterations));
-            FieldReport report;
-            Native.Check(NativeMethods.lml_field_solve(Handle, (uint)maxIterations, out report));
+            var report = default(FieldReport);
+            Native.Check(Locked(h => NativeMethods.lml_field_solve(h, (uint)maxIterations, out report)));
             return report;
         }
 
@@ -63,36 +73,39 @@ namespace Lamella
         {
             get
             {
-                FieldReport report;
-                Native.Check(NativeMethods.lml_field_report(Handle, out report));
+                var report = default(FieldReport);
+                Native.Check(Locked(h => NativeMethods.lml_field_report(h, out report)));
                 return report;
             }
         }
 
         /// <summary>Replaces the remaining weight schedule by constant weights (paper Eq. 12); a converged session runs again.</summary>
-        public void SetWeights(Weights weights) => Native.Check(NativeMethods.lml_field_set_weights(Handle, weights));
+        public void SetWeights(Weights weights) => Native.Check(Locked(h => NativeMethods.lml_field_set_weights(h, weights)));
 
         /// <summary>The current field, one value per vertex.</summary>
         public double[] Values() =>
-            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_values(Handle, b, c, out n));
+            Locked(h => Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_values(h, b, c, out n)));
 
         /// <summary>The unit binormal of the level curve at each vertex (x, y, z; zero at boundary and singular vertices).</summary>
         public double[] Binormals() =>
-            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_binormals(Handle, b, c, out n));
+            Locked(h => Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_binormals(h, b, c, out n)));
 
         /// <summary>The unit side vector of the Darboux frame (paper Eq. 10) at each vertex (x, y, z).</summary>
         public double[] SideVectors() =>
-            Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_side_vectors(Handle, b, c, out n));
+            Locked(h => Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_side_vectors(h, b, c, out n)));
 
         /// <summary>The singular vertices of the last report.</summary>
         public int[] SingularVertices() =>
-            Array.ConvertAll(Native.Read((uint[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_singular_vertices(Handle, b, c, out n)), i => checked((int)i));
+            Array.ConvertAll(Locked(h => Native.Read((uint[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_singular_vertices(h, b, c, out n))), i => checked((int)i));
 
         /// <summary>The whole session as portable bytes (for <see cref="Load"/>).</summary>
         public byte[] Save() =>
-            Native.Read((byte[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_save(Handle, b, c, out n));
+            Locked(h => Native.Read((byte[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_field_save(h, b, c, out n)));
 
-        /// <summary>Releases the native session (harmless to call twice).</summary>
-        public void Dispose() => Handle.Dispose();
+        /// <summary>Releases the native session (harmless to call twice; waits for a call running on another thread).</summary>
+        public void Dispose()
+        {
+            lock (gate) Handle.Dispose();
+        }
     }
 }

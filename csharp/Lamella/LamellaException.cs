@@ -1,11 +1,19 @@
 using System;
+using System.Runtime.Serialization;
+using System.Security.Permissions;
 
 namespace Lamella
 {
-    /// <summary>A failed native call: its <see cref="Status"/> and the library's message, which names the offending element.</summary>
+    /// <summary>
+    /// A failed native call: its <see cref="Status"/> and the library's message, which names the offending element.
+    /// Serialisable with both (e.g. across application domains or into a log).
+    /// </summary>
     [Serializable]
     public sealed class LamellaException : Exception
     {
+        private const string StatusKey = "Lamella.Status";
+        private const string NativeMessageKey = "Lamella.NativeMessage";
+
         /// <summary>The failure status returned by the native library (always negative).</summary>
         public Status Status { get; }
 
@@ -18,6 +26,24 @@ namespace Lamella
         {
             Status = status;
             NativeMessage = nativeMessage;
+        }
+
+        /// <summary>Restores a serialised exception with its status and native message.</summary>
+        private LamellaException(SerializationInfo info, StreamingContext context)
+            : base(info, context)
+        {
+            Status = (Status)info.GetInt32(StatusKey);
+            NativeMessage = info.GetString(NativeMessageKey);
+        }
+
+        /// <summary>Serialises the exception with its status and native message.</summary>
+        [SecurityPermission(SecurityAction.Demand, SerializationFormatter = true)]
+        public override void GetObjectData(SerializationInfo info, StreamingContext context)
+        {
+            if (info == null) throw new ArgumentNullException(nameof(info));
+            base.GetObjectData(info, context);
+            info.AddValue(StatusKey, (int)Status);
+            info.AddValue(NativeMessageKey, NativeMessage);
         }
     }
 }

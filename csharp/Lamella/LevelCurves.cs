@@ -24,8 +24,8 @@ namespace Lamella
         {
             if (field == null) throw new ArgumentNullException(nameof(field));
             if (levels == null) throw new ArgumentNullException(nameof(levels));
-            CurvesHandle handle;
-            Native.Check(NativeMethods.lml_curves_new(field.Handle, levels, Native.Size(levels.Length), spacing, out handle));
+            CurvesHandle handle = null;
+            Native.Check(field.Locked(h => NativeMethods.lml_curves_new(h, levels, Native.Size(levels.Length), spacing, out handle)));
             return new LevelCurves(handle);
         }
 
@@ -34,8 +34,8 @@ namespace Lamella
         {
             if (field == null) throw new ArgumentNullException(nameof(field));
             if (count < 0) throw new ArgumentOutOfRangeException(nameof(count));
-            CurvesHandle handle;
-            Native.Check(NativeMethods.lml_curves_new_uniform(field.Handle, Native.Size(count), spacing, out handle));
+            CurvesHandle handle = null;
+            Native.Check(field.Locked(h => NativeMethods.lml_curves_new_uniform(h, Native.Size(count), spacing, out handle)));
             return new LevelCurves(handle);
         }
 

@@ -9,6 +9,12 @@ pub enum CurveError {
     FieldLength { expected: usize, actual: usize },
     /// A field value is NaN or infinite.
     NonFiniteField { vertex: usize },
+    /// A field value's magnitude exceeds [`crate::field::FIELD_VALUE_LIMIT`].
+    FieldValueOutOfRange { vertex: usize, value: f64 },
+    /// More levels were requested than [`super::MAX_LEVELS`].
+    TooManyLevels { count: usize },
+    /// Resampling at this spacing would give a polyline more points than [`super::MAX_CURVE_POINTS`].
+    TooManyPoints { spacing: f64, points: f64 },
     /// The field is constant: it has no level curves.
     ConstantField,
     /// Zero levels were requested.
@@ -30,6 +36,17 @@ impl fmt::Display for CurveError {
                 write!(f, "the field has {actual} values but the mesh has {expected} vertices")
             }
             CurveError::NonFiniteField { vertex } => write!(f, "field value at vertex {vertex} is not finite"),
+            CurveError::FieldValueOutOfRange { vertex, value } => write!(
+                f,
+                "field value {value:e} at vertex {vertex} is out of range (allowed: ±{:e})",
+                crate::field::FIELD_VALUE_LIMIT
+            ),
+            CurveError::TooManyLevels { count } => write!(f, "{count} levels requested, at most {} are allowed", super::MAX_LEVELS),
+            CurveError::TooManyPoints { spacing, points } => write!(
+                f,
+                "spacing {spacing:e} would give a polyline of {points:.3e} points, more than {} allowed",
+                super::MAX_CURVE_POINTS
+            ),
             CurveError::ConstantField => write!(f, "the field is constant: it has no level curves"),
             CurveError::NoLevels => write!(f, "at least one level is needed"),
             CurveError::NonFiniteLevel { index } => write!(f, "level {index} is not finite"),

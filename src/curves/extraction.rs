@@ -17,12 +17,16 @@ const MERGE: f64 = 1e-9;
 const NONE: u32 = u32::MAX;
 
 /// The level curves of `field` (one value per vertex) at each of `levels`, level by level, each
-/// level's pieces in a deterministic order. Every level must lie in `[min F, max F]`.
+/// level's pieces in a deterministic order. Every level must lie in `[min F, max F]`; at most
+/// [`super::MAX_LEVELS`] levels.
 /// Pieces that collapse to a single point are dropped.
 pub fn extract_level_curves(mesh: &TriMesh, field: &[f64], levels: &[f64]) -> Result<Vec<LevelCurve>, CurveError> {
     let (min, max) = field_range(mesh, field)?;
     if levels.is_empty() {
         return Err(CurveError::NoLevels);
+    }
+    if levels.len() > super::MAX_LEVELS {
+        return Err(CurveError::TooManyLevels { count: levels.len() });
     }
     for (index, &level) in levels.iter().enumerate() {
         if !level.is_finite() {

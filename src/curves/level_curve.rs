@@ -22,6 +22,26 @@ pub struct LevelCurve {
     pub singular_vertices: Vec<u32>,
 }
 
+/// Most points of the polylines one resampling produces, all curves together
+/// ([`resample_all`]) or one curve ([`LevelCurve::resampled`]): 4,000,000 (about 200 MB of
+/// points and normals).
+pub const MAX_CURVE_POINTS: usize = 4_000_000;
+
+/// Every curve resampled at `spacing` (see [`LevelCurve::resampled`]), after checking that
+/// together they get at most [`MAX_CURVE_POINTS`] points ([`CurveError::TooManyPoints`] with the
+/// total, before anything is allocated); [`CurveError::InvalidSpacing`] for a spacing that is
+/// not finite and positive.
+pub fn resample_all(curves: &[LevelCurve], spacing: f64) -> Result<Vec<LevelCurve>, CurveError> {
+    if !(spacing.is_finite() && spacing > 0.0) {
+        return Err(CurveError::InvalidSpacing { spacing });
+    }
+    let total: f64 = curves.iter().map(|c| (c.length() / spacing).round().max(3.0) + 1.0).sum();
+    if !(total < MAX_CURVE_POINTS as f64) {
+        return Err(CurveError::TooManyPoints { spacing, points: total });
+    }
+    curves.iter().map(|c| c.resampled(spacing)).collect()
+}
+
 impl LevelCurve {
     /// Number of segments (`points.len()` for a closed curve).
     pub fn segment_count(&self) -> usize {
@@ -47,7 +67,8 @@ impl LevelCurve {
     /// The curve resampled at equal arc-length steps as close to `spacing` as the length allows:
     /// an open curve keeps its end points and gets `max(1, round(L/spacing))` segments, a closed
     /// one `max(3, round(L/spacing))`. New points lie on the old polyline (hence on the mesh);
-    /// normals are interpolated linearly and normalised.
+    /// normals are interpolated linearly and normalised. At most [`super::MAX_CURVE_POINTS`]
+    /// points ([`CurveError::TooManyPoints`], checked before allocating).
     pub fn resampled(&self, spacing: f64) -> Result<LevelCurve, CurveError> {
         if !(spacing.is_finite() && spacing > 0.0) {
             return Err(CurveError::InvalidSpacing { spacing });
@@ -60,7 +81,11 @@ impl LevelCurve {
             return Ok(self.clone());
         }
         let minimum = if self.closed { 3 } else { 1 };
-        let segments = ((length / spacing).round() as usize).max(minimum);
+        let steps = (length / spacing).round();
+        if !(steps < super::MAX_CURVE_POINTS as f64) {
+            return Err(CurveError::TooManyPoints { spacing, points: steps });
+        }
+        let segments = (steps as usize).max(minimum);
         let samples = if self.closed { segments } else { segments + 1 };
         let mut points = Vec::with_capacity(samples);
         let mut normals = Vec::with_capacity(samples);

@@ -9,5 +9,5 @@ mod levels;
 
 pub use error::CurveError;
 pub use extraction::extract_level_curves;
-pub use level_curve::LevelCurve;
-pub use levels::{field_range, uniform_levels};
+pub use level_curve::{resample_all, LevelCurve, MAX_CURVE_POINTS};
+pub use levels::{field_range, uniform_levels, MAX_LEVELS};

@@ -15,6 +15,10 @@ use crate::tracing::{boundary_segments, boundary_start, evenly_spaced_starts, ne
 /// equal to the library's default.)
 pub const LML_DEFAULT_CORNER_TURN_DEGREES: f64 = 30.0;
 
+/// Most start points one `lml_boundary_starts` call returns. (A literal, so that the header can
+/// show it; equal to the library's limit.)
+pub const LML_MAX_STARTS: u32 = 10_000;
+
 /// Writes to `*count` the number of segments of boundary loop `loop_index` (loops numbered from
 /// 0, the loops of a disk with holes in the library's order) when split at its corners:
 /// vertices where the boundary turns by at least `corner_turn_degrees` (in [0, 180], e.g.
@@ -47,13 +51,15 @@ pub unsafe extern "C" fn lml_boundary_segment_count(
 /// interior on the left, seen from the side the normals point to); pass them to
 /// `lml_guides_trace`.
 ///
+/// `count` is 1 to `LML_MAX_STARTS` (10000), checked before anything is allocated.
+///
 /// Two-call pattern: `*needed` is always set to `count` (when the arguments are valid); if
 /// `out` is NULL or `capacity` (in points) is smaller, nothing is copied and
 /// `LML_STATUS_BUFFER_TOO_SMALL` is returned. The buffer stays owned by the caller.
 ///
 /// Returns `LML_STATUS_OK`; `LML_STATUS_BUFFER_TOO_SMALL`; `LML_STATUS_INVALID_ARGUMENT` (NULL
 /// pointer, `loop_index` or `segment_index` out of range (the count is given),
-/// `corner_turn_degrees` not in [0, 180], `count` 0).
+/// `corner_turn_degrees` not in [0, 180], `count` 0 or above `LML_MAX_STARTS`).
 #[no_mangle]
 pub unsafe extern "C" fn lml_boundary_starts(
     mesh: *const LmlMesh,
@@ -117,5 +123,10 @@ mod tests {
     #[test]
     fn the_corner_default_is_the_library_default() {
         assert_eq!(super::LML_DEFAULT_CORNER_TURN_DEGREES, crate::tracing::DEFAULT_CORNER_TURN_DEGREES);
+    }
+
+    #[test]
+    fn the_start_limit_is_the_library_limit() {
+        assert_eq!(usize::try_from(super::LML_MAX_STARTS), Ok(crate::tracing::MAX_STARTS));
     }
 }

@@ -7,9 +7,17 @@ use super::guard::guarded;
 use super::layout::{flat_xyz, offsets};
 use super::raw::{copy_out, handle, input, release, Out};
 use super::status::LmlStatus;
-use crate::curves::{extract_level_curves, uniform_levels, LevelCurve};
+use crate::curves::{extract_level_curves, resample_all, uniform_levels, LevelCurve};
 use crate::mesh::TriMesh;
 use std::sync::Arc;
+
+/// Most levels one `lml_curves_new` / `lml_curves_new_uniform` call accepts. (A literal, so
+/// that the header can show it; equal to the library's limit.)
+pub const LML_MAX_LEVELS: usize = 10_000;
+
+/// Most points the polylines of one `lml_curves_new` / `lml_curves_new_uniform` call may get
+/// by resampling (`spacing` > 0). (A literal, equal to the library's limit.)
+pub const LML_MAX_CURVE_POINTS: usize = 4_000_000;
 
 /// Level polylines of a field (opaque), each with its level value, per-point surface normals and
 /// a closed flag, together with the surface they lie on. Create it with `lml_curves_new` or
@@ -28,7 +36,7 @@ fn extract(field: &LmlField, levels: impl FnOnce(&[f64]) -> Result<Vec<f64>, Fai
     let values = field.solver.field();
     let mut curves = extract_level_curves(&field.mesh, &values, &levels(&values)?)?;
     if spacing > 0.0 {
-        curves = curves.iter().map(|c| c.resampled(spacing)).collect::<Result<_, _>>()?;
+        curves = resample_all(&curves, spacing)?;
     }
     Ok(LmlCurves { mesh: Arc::clone(&field.mesh), curves })
 }
@@ -38,19 +46,22 @@ fn extract(field: &LmlField, levels: impl FnOnce(&[f64]) -> Result<Vec<f64>, Fai
 /// - `field`: the session; its current field is used (converged or not). The curves keep their
 ///   own reference to the surface, so the session may be freed or stepped on afterwards.
 /// - `levels`: `level_count` field values (in the scale of the initial field), each finite and
-///   inside [min F, max F] of the current field. Copied. Each level may give several polylines
+///   inside [min F, max F] of the current field; `level_count` at most `LML_MAX_LEVELS`
+///   (10000). Copied. Each level may give several polylines
 ///   (open ones from boundary to boundary first, then closed loops), or none when it only
 ///   touches the surface in a point.
 /// - `spacing`: 0 keeps the polylines' own vertices (one per crossed mesh edge); > 0 resamples
 ///   each polyline at equal arc-length steps as close to `spacing` (a length) as its length
 ///   allows, keeping the end points of open ones. Strips use these vertices, so `spacing`
-///   sets their quad length.
+///   sets their quad length. All polylines together may get at most `LML_MAX_CURVE_POINTS`
+///   (4000000) points: a smaller spacing is refused before anything is allocated.
 /// - `out`: receives the new curves, owned by the caller (release with `lml_curves_free`); set
 ///   to NULL on failure.
 ///
-/// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `level_count` 0,
-/// a non-finite level (its index is named) or one outside the field's range (the range is
-/// given), `spacing` negative or not finite); `LML_STATUS_SINGULAR_FIELD` (the field is
+/// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `level_count` 0 or
+/// above `LML_MAX_LEVELS`, a non-finite level (its index is named) or one outside the field's
+/// range (the range is given), `spacing` negative, not finite or so small that the polylines
+/// would exceed `LML_MAX_CURVE_POINTS` points); `LML_STATUS_SINGULAR_FIELD` (the field is
 /// constant).
 #[no_mangle]
 pub unsafe extern "C" fn lml_curves_new(
@@ -73,10 +84,12 @@ pub unsafe extern "C" fn lml_curves_new(
 
 /// Like `lml_curves_new` at `count` levels spread uniformly over the current field's range
 /// [min F, max F], the extremes left out: `min F + k (max F − min F) / (count + 1)`,
-/// k = 1 … `count`. Read the values back with `lml_curves_levels`.
+/// k = 1 … `count`, `count` at most `LML_MAX_LEVELS` (10000). Read the values back with
+/// `lml_curves_levels`.
 ///
-/// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `count` 0, `spacing`
-/// negative or not finite); `LML_STATUS_SINGULAR_FIELD` (the field is constant).
+/// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `count` 0 or above
+/// `LML_MAX_LEVELS`, `spacing` negative, not finite or too small as in `lml_curves_new`);
+/// `LML_STATUS_SINGULAR_FIELD` (the field is constant).
 #[no_mangle]
 pub unsafe extern "C" fn lml_curves_new_uniform(field: *const LmlField, count: usize, spacing: f64, out: *mut *mut LmlCurves) -> LmlStatus {
     guarded(|| {
@@ -189,4 +202,13 @@ pub unsafe extern "C" fn lml_curves_closed(curves: *const LmlCurves, out: *mut u
         let closed: Vec<u8> = curves.curves.iter().map(|c| u8::from(c.closed)).collect();
         unsafe { copy_out(&closed, out, capacity, needed, "out") }
     })
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_limits_are_the_library_limits() {
+        assert_eq!(super::LML_MAX_LEVELS, crate::curves::MAX_LEVELS);
+        assert_eq!(super::LML_MAX_CURVE_POINTS, crate::curves::MAX_CURVE_POINTS);
+    }
 }

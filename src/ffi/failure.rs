@@ -45,12 +45,16 @@ fn mesh_status(e: &MeshError) -> LmlStatus {
 impl From<FieldError> for Failure {
     fn from(e: FieldError) -> Failure {
         let status = match &e {
-            FieldError::FieldLength { .. } | FieldError::NonFiniteValue { .. } | FieldError::InvalidParameter { .. } => LmlStatus::InvalidArgument,
+            FieldError::FieldLength { .. }
+            | FieldError::NonFiniteValue { .. }
+            | FieldError::ValueOutOfRange { .. }
+            | FieldError::InvalidParameter { .. } => LmlStatus::InvalidArgument,
             FieldError::ConstantField => LmlStatus::SingularField,
             FieldError::CorruptData { .. } | FieldError::UnsupportedVersion { .. } => LmlStatus::CorruptData,
             FieldError::Solver(
                 SolverError::NonFiniteResidual { .. } | SolverError::NonFiniteJacobian { .. } | SolverError::FactorizationFailed { .. },
-            ) => LmlStatus::DidNotConverge,
+            )
+            | FieldError::SolverFailedNear { .. } => LmlStatus::DidNotConverge,
             _ => LmlStatus::InternalError,
         };
         Failure::new(status, e.to_string())
@@ -60,9 +64,13 @@ impl From<FieldError> for Failure {
 impl From<CurveError> for Failure {
     fn from(e: CurveError) -> Failure {
         let status = match &e {
-            CurveError::NoLevels | CurveError::NonFiniteLevel { .. } | CurveError::LevelOutOfRange { .. } | CurveError::InvalidSpacing { .. } => {
-                LmlStatus::InvalidArgument
-            }
+            CurveError::NoLevels
+            | CurveError::NonFiniteLevel { .. }
+            | CurveError::LevelOutOfRange { .. }
+            | CurveError::InvalidSpacing { .. }
+            | CurveError::TooManyLevels { .. }
+            | CurveError::TooManyPoints { .. }
+            | CurveError::FieldValueOutOfRange { .. } => LmlStatus::InvalidArgument,
             CurveError::ConstantField => LmlStatus::SingularField,
             // The field and the curves come from the library itself: a mismatch is a bug.
             CurveError::FieldLength { .. } | CurveError::NonFiniteField { .. } | CurveError::NormalCount { .. } => LmlStatus::InternalError,

@@ -34,15 +34,17 @@ impl LmlField {
 /// Starts a field optimisation whose level sets should form the family of `params`.
 ///
 /// - `mesh`: the surface; the session keeps its own copy, so the mesh may be freed afterwards.
-/// - `initial_field`: `n` doubles, one value per mesh vertex (in vertex order), not constant;
-///   e.g. a height function whose level curves roughly follow the wanted direction. Copied.
+/// - `initial_field`: `n` doubles, one value per mesh vertex (in vertex order), not constant,
+///   each finite with magnitude at most 1e100; e.g. a height function whose level curves
+///   roughly follow the wanted direction. Copied.
 /// - `params`: filled by `lml_field_params_default` and possibly edited. Copied.
 /// - `out`: receives the new session, owned by the caller (release with `lml_field_free`);
 ///   set to NULL on failure.
 ///
 /// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `n` ≠ vertex count,
-/// non-finite value (the message names the vertex), parameter out of range (named));
-/// `LML_STATUS_SINGULAR_FIELD` (constant field, no level curves).
+/// a non-finite value or one beyond ±1e100 (the message names the vertex and the value),
+/// parameter out of range (named)); `LML_STATUS_SINGULAR_FIELD` (constant field, no level
+/// curves).
 #[no_mangle]
 pub unsafe extern "C" fn lml_field_new(
     mesh: *const LmlMesh,

@@ -84,7 +84,7 @@ fn trace_failure(i: usize, e: TraceError) -> Failure {
 /// `options` (see `lml_guides_stops`); it has at least two points.
 ///
 /// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `count` 0, an option
-/// out of range (named), θ or α out of range, or start `i` invalid: a vertex out of range, not a
+/// out of range (named; e.g. `max_points` above `LML_MAX_TRACE_POINTS`), θ or α out of range, or start `i` invalid: a vertex out of range, not a
 /// boundary edge, `t` outside [0, 1], or no first segment leaves it at α into the surface; the
 /// message names `starts[i]`).
 #[no_mangle]

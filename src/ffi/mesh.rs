@@ -28,7 +28,9 @@ pub struct LmlMesh {
 /// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL `out`, NULL array with a non-zero
 /// count, count overflow); `LML_STATUS_INVALID_MESH` (no vertices or faces, NaN/infinite
 /// coordinate, index out of range, repeated index, zero-area face, isolated vertex,
-/// non-manifold edge or vertex, inconsistent orientation); `LML_STATUS_NOT_A_DISK` (several
+/// non-manifold edge or vertex, inconsistent orientation, a fold: two neighbouring faces whose
+/// normals are more than 120° apart, e.g. an inverted triangle; a sliver: a face with less than
+/// 1e-8 times the area of a neighbouring face); `LML_STATUS_NOT_A_DISK` (several
 /// components, closed surfaces, handles). The message names the vertex, face or edge.
 #[no_mangle]
 pub unsafe extern "C" fn lml_mesh_new(
@@ -50,14 +52,16 @@ pub unsafe extern "C" fn lml_mesh_new(
 }
 
 /// Reads and validates a Wavefront OBJ file (`v` and `f` statements; polygons are fanned into
-/// triangles; texture and normal indices are ignored).
+/// triangles; texture and normal indices are ignored). Files larger than 512 MiB are refused
+/// (the size is checked first; a device or pipe is read up to that limit).
 ///
 /// - `path`: NUL-terminated UTF-8 file path.
 /// - `out`: receives the new mesh, owned by the caller; set to NULL on failure.
 ///
 /// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL or non-UTF-8 path, unreadable
-/// file); `LML_STATUS_INVALID_MESH` (malformed line, or any mesh problem of `lml_mesh_new`,
-/// with its 1-based OBJ line); `LML_STATUS_NOT_A_DISK`.
+/// file, a directory, a file over 512 MiB); `LML_STATUS_INVALID_MESH` (malformed line (the
+/// offending token is quoted, clipped to 80 characters), or any mesh problem of
+/// `lml_mesh_new`, with its 1-based OBJ line); `LML_STATUS_NOT_A_DISK`.
 #[no_mangle]
 pub unsafe extern "C" fn lml_mesh_read_obj(path: *const c_char, out: *mut *mut LmlMesh) -> LmlStatus {
     guarded(|| {

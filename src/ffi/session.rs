@@ -28,8 +28,13 @@ pub unsafe extern "C" fn lml_field_save(field: *const LmlField, out: *mut u8, ca
 /// them). `out` receives the new session, owned by the caller (release with `lml_field_free`);
 /// set to NULL on failure.
 ///
+/// Every restored quantity is checked: parameters as in `lml_field_new` (and at most 100 damped
+/// trials per iteration), scale factors normal and positive, every value finite, the field
+/// within ±1e100 and the mesh valid once un-scaled, counters and damping in range.
+///
 /// Returns `LML_STATUS_OK`; `LML_STATUS_CORRUPT_DATA` (empty, truncated, damaged or
-/// inconsistent bytes, or another format version: the message says which);
+/// inconsistent bytes, a restored quantity out of range, or another format version: the
+/// message says which);
 /// `LML_STATUS_INVALID_ARGUMENT` (NULL `out`, NULL `bytes` with a non-zero length).
 #[no_mangle]
 pub unsafe extern "C" fn lml_field_load(bytes: *const u8, length: usize, out: *mut *mut LmlField) -> LmlStatus {

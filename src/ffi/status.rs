@@ -25,7 +25,7 @@ pub enum LmlStatus {
     InvalidArgument = -1,
     /// The triangles or coordinates do not form a valid mesh: non-finite coordinates, indices
     /// out of range, repeated indices, zero-area faces, isolated vertices, non-manifold edges
-    /// or vertices, inconsistent orientation, malformed OBJ lines.
+    /// or vertices, inconsistent orientation, folded faces, slivers, malformed OBJ lines.
     InvalidMesh = -2,
     /// The mesh is valid but not a single topological disk (possibly with holes), which the
     /// method requires (paper Sec. 7): closed, several components, handles.
@@ -33,7 +33,8 @@ pub enum LmlStatus {
     /// The scalar field has no usable level curves (it is constant or its gradient vanishes).
     SingularField = -4,
     /// The optimisation did not converge: `lml_field_solve` ran out of iterations, or an
-    /// iteration failed numerically (non-finite residuals, no damped factorisation).
+    /// iteration failed numerically (non-finite residuals, no damped factorisation; the message
+    /// then names the vertices with the largest residuals).
     DidNotConverge = -5,
     /// A caller-owned output buffer is NULL or too small; `*needed` holds the required count.
     BufferTooSmall = -6,

@@ -28,19 +28,31 @@ pub struct LmlStripWeights {
     pub ruling_anchor: f64,
 }
 
+/// Most binormal-strip rounds (`LmlStripParams.binormal_rounds`). (A literal, so that the header
+/// can show it; equal to the library's limit.)
+pub const LML_MAX_STRIP_ROUNDS: u32 = 32;
+
+/// Most iterations of one strip stage (`LmlStripParams.iterations_per_round`,
+/// `final_iterations`, `polish_iterations`); with `LML_MAX_STRIP_ROUNDS` a strip runs at most
+/// 17500 iterations. (A literal, equal to the library's limit.)
+pub const LML_MAX_STRIP_ITERATIONS: u32 = 500;
+
 /// Parameters of a strip computation. Fill it with `lml_strip_params_default`, then change
 /// fields as needed. Lengths are in the mesh's unit, angles in degrees. (No padding: the four
 /// 32-bit fields come first.)
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LmlStripParams {
-    /// Binormal-strip stage: rounds of (project onto the surface, optimise). Default 8.
+    /// Binormal-strip stage: rounds of (project onto the surface, optimise), 0 to
+    /// `LML_MAX_STRIP_ROUNDS` (32). Default 8.
     pub binormal_rounds: u32,
-    /// Levenberg–Marquardt iterations per binormal round and in the first rectifying round. Default 15.
+    /// Levenberg–Marquardt iterations per binormal round and in the first rectifying round, 0 to
+    /// `LML_MAX_STRIP_ITERATIONS` (500). Default 15.
     pub iterations_per_round: u32,
-    /// Iterations of the final rectifying round. Default 60.
+    /// Iterations of the final rectifying round, 0 to `LML_MAX_STRIP_ITERATIONS`. Default 60.
     pub final_iterations: u32,
-    /// Iterations of the closing polish (positions held, rulings solved for planar quads). Default 30.
+    /// Iterations of the closing polish (positions held, rulings solved for planar quads), 0 to
+    /// `LML_MAX_STRIP_ITERATIONS`. Default 30.
     pub polish_iterations: u32,
     /// Target angle θ between binormal and surface normal, in [0, 180]: the θ of the field the
     /// curves come from.
@@ -122,4 +134,13 @@ pub unsafe extern "C" fn lml_strip_params_default(theta_degrees: f64, width: f64
         });
         Ok(LmlStatus::Ok)
     })
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_iteration_limits_are_the_library_limits() {
+        assert_eq!(usize::try_from(super::LML_MAX_STRIP_ROUNDS), Ok(crate::strips::MAX_STRIP_ROUNDS));
+        assert_eq!(usize::try_from(super::LML_MAX_STRIP_ITERATIONS), Ok(crate::strips::MAX_STRIP_ITERATIONS));
+    }
 }

@@ -46,7 +46,8 @@ pub struct LmlStrips {
 /// built: `lml_last_error_message()` names the strips and the worst point and what to try,
 /// `lml_strips_verdict` gives the numbers); `LML_STATUS_INVALID_ARGUMENT` (NULL pointer; width
 /// not finite or ≤ 0, θ outside [0, 180], tolerance outside (0, 180), a weight negative or not
-/// finite (the parameter is named)).
+/// finite, an iteration count above `LML_MAX_STRIP_ROUNDS` / `LML_MAX_STRIP_ITERATIONS` (the
+/// parameter is named)).
 #[no_mangle]
 pub unsafe extern "C" fn lml_strips_new(curves: *const LmlCurves, params: *const LmlStripParams, out: *mut *mut LmlStrips) -> LmlStatus {
     guarded(|| {

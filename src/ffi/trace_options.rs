@@ -7,6 +7,10 @@ use super::raw::Out;
 use super::status::LmlStatus;
 use crate::tracing::{StopReason, TraceOptions};
 
+/// Largest `LmlTraceOptions.max_points`. (A literal, so that the header can show it; equal to
+/// the library's limit.)
+pub const LML_MAX_TRACE_POINTS: u64 = 10_000_000;
+
 /// Limits and tolerances of `lml_guides_trace`. Fill it with `lml_trace_options_default`, then
 /// change fields as needed. Lengths are in the mesh's unit, angles in degrees.
 #[repr(C)]
@@ -14,7 +18,8 @@ use crate::tracing::{StopReason, TraceOptions};
 pub struct LmlTraceOptions {
     /// Stop a curve once it is at least this long; `INFINITY` for no limit (default). > 0.
     pub max_length: f64,
-    /// Stop a curve once it has this many points (≥ 2; default 100000).
+    /// Stop a curve once it has this many points (2 to `LML_MAX_TRACE_POINTS` = 10000000;
+    /// default 100000).
     pub max_points: u64,
     /// A root of the tracing equation (paper Eq. 4) is accepted if the angle it realises is
     /// within this many degrees of θ (0 < tolerance < 90; default 2).
@@ -93,4 +98,12 @@ pub(crate) unsafe fn options_or_default(options: *const LmlTraceOptions) -> Resu
     }
     // SAFETY: forwarded contract.
     Ok(unsafe { super::raw::handle(options, "options") }?.to_options())
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_point_limit_is_the_library_limit() {
+        assert_eq!(usize::try_from(super::LML_MAX_TRACE_POINTS), Ok(crate::tracing::MAX_TRACE_POINTS));
+    }
 }

@@ -11,6 +11,8 @@ pub enum FieldError {
     FieldLength { expected: usize, actual: usize },
     /// A field value is NaN or infinite.
     NonFiniteValue { vertex: usize },
+    /// A field value's magnitude exceeds [`super::FIELD_VALUE_LIMIT`].
+    ValueOutOfRange { vertex: usize, value: f64 },
     /// The field is constant (or its gradient vanishes everywhere): it has no level curves.
     ConstantField,
     /// A parameter is out of range; `name` is the parameter, `message` says what is allowed.
@@ -21,6 +23,9 @@ pub enum FieldError {
     UnsupportedVersion { found: u32, supported: u32 },
     /// The least-squares solver failed.
     Solver(SolverError),
+    /// The least-squares solver failed during an iteration; `vertices` carry the largest
+    /// residuals (largest first), where the mesh or the field is most likely at fault.
+    SolverFailedNear { error: SolverError, vertices: Vec<u32> },
 }
 
 impl fmt::Display for FieldError {
@@ -30,6 +35,9 @@ impl fmt::Display for FieldError {
                 write!(f, "the field has {actual} values but the mesh has {expected} vertices")
             }
             FieldError::NonFiniteValue { vertex } => write!(f, "field value at vertex {vertex} is not finite"),
+            FieldError::ValueOutOfRange { vertex, value } => {
+                write!(f, "field value {value:e} at vertex {vertex} is out of range (allowed: ±{:e})", super::FIELD_VALUE_LIMIT)
+            }
             FieldError::ConstantField => write!(f, "the field is constant: it has no level curves"),
             FieldError::InvalidParameter { name, message } => write!(f, "parameter `{name}`: {message}"),
             FieldError::CorruptData { message } => write!(f, "corrupt field session: {message}"),
@@ -37,6 +45,9 @@ impl fmt::Display for FieldError {
                 write!(f, "field session format version {found} is not supported (this library reads version {supported})")
             }
             FieldError::Solver(e) => write!(f, "solver: {e}"),
+            FieldError::SolverFailedNear { error, vertices } => {
+                write!(f, "solver: {error}; the largest residuals are at vertices {vertices:?} (look at the mesh there)")
+            }
         }
     }
 }

@@ -3,12 +3,13 @@
 
 use super::darboux::LevelFrame;
 use super::error::FieldError;
+use super::failure_site::largest_residual_vertices;
 use super::gradient_norm::mean_gradient_norm;
 use super::params::{Family, FieldParams, Weights, SETTLED_CURVE_ENERGY, SETTLING_ITERATIONS};
 use super::problem::FieldProblem;
 use super::report::{curve_energy, problem_frames, Evaluated, StepReport};
 use crate::mesh::{TriMesh, Vec3};
-use crate::solver::{LeastSquaresProblem, LevenbergMarquardt};
+use crate::solver::{LeastSquaresProblem, LevenbergMarquardt, LmOptions, SolverError};
 
 /// The factors between the caller's units and the normalised problem.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -18,6 +19,11 @@ pub(crate) struct Scales {
     /// Internal lengths = caller lengths × `length`.
     pub length: f64,
 }
+
+/// Largest magnitude of a field value accepted by [`FieldSolver::new`] and by the level-curve
+/// functions: 1e100. Far beyond any useful field (values are level labels, e.g. coordinates in
+/// metres), and small enough that gradients and their squares stay finite on any valid mesh.
+pub const FIELD_VALUE_LIMIT: f64 = 1e100;
 
 /// Optimises a scalar field so that its level sets form the requested curve family.
 ///
@@ -130,6 +136,18 @@ impl FieldSolver {
         rayon::scope(|_| self.run(max_iterations))
     }
 
+    /// A failed iteration's error with the vertices of the largest residuals at the current
+    /// variables (unchanged by the failed iteration).
+    fn located(&self, error: SolverError) -> FieldError {
+        match error {
+            SolverError::FactorizationFailed { .. } | SolverError::NonFiniteResidual { .. } | SolverError::NonFiniteJacobian { .. } => {
+                let vertices = largest_residual_vertices(&self.problem, &self.x, self.vertex_count());
+                FieldError::SolverFailedNear { error, vertices }
+            }
+            other => FieldError::Solver(other),
+        }
+    }
+
     /// [`Self::step`], on the calling thread.
     fn run(&mut self, max_iterations: usize) -> Result<StepReport, FieldError> {
         let mut flips = 0;
@@ -139,7 +157,7 @@ impl FieldSolver {
         while ran < max_iterations && !self.converged {
             flips += self.reorient_side_vectors();
             iterated_weights = Some(self.problem.weights());
-            let outcome = self.lm.iterate(&self.problem, &mut self.x)?;
+            let outcome = self.lm.iterate(&self.problem, &mut self.x).map_err(|error| self.located(error))?;
             if outcome.accepted {
                 self.frames = None;
             }
@@ -362,6 +380,9 @@ fn validate_field(mesh: &TriMesh, field: &[f64]) -> Result<(), FieldError> {
     if let Some(vertex) = field.iter().position(|f| !f.is_finite()) {
         return Err(FieldError::NonFiniteValue { vertex });
     }
+    if let Some(vertex) = field.iter().position(|f| f.abs() > FIELD_VALUE_LIMIT) {
+        return Err(FieldError::ValueOutOfRange { vertex, value: field[vertex] });
+    }
     let (min, max) = field.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &f| (lo.min(f), hi.max(f)));
     if max - min <= 1e-12 * max.abs().max(min.abs()) {
         return Err(FieldError::ConstantField);
@@ -397,6 +418,34 @@ pub(super) fn validate_params(params: &FieldParams) -> Result<(), FieldError> {
     }
     if !(params.relative_tolerance.is_finite() && params.relative_tolerance >= 0.0) {
         return Err(FieldError::InvalidParameter { name: "relative_tolerance", message: "must be finite and ≥ 0".into() });
+    }
+    validate_lm(&params.lm)
+}
+
+/// Most damped solves one iteration may try ([`LmOptions::max_trials`]): each costs a
+/// factorisation, so this bounds the time of an iteration.
+pub const MAX_LM_TRIALS: usize = 100;
+
+/// The Levenberg–Marquardt options are finite and ordered, with 1 to [`MAX_LM_TRIALS`] trials.
+fn validate_lm(lm: &LmOptions) -> Result<(), FieldError> {
+    let bad = |name: &'static str, message: String| Err(FieldError::InvalidParameter { name, message });
+    if !(1..=MAX_LM_TRIALS).contains(&lm.max_trials) {
+        return bad("lm.max_trials", format!("must be 1 to {MAX_LM_TRIALS}, got {}", lm.max_trials));
+    }
+    let tolerances = [("lm.gradient_tolerance", lm.gradient_tolerance), ("lm.step_tolerance", lm.step_tolerance), ("lm.energy_tolerance", lm.energy_tolerance)];
+    for (name, value) in tolerances {
+        if !(value.is_finite() && value >= 0.0) {
+            return bad(name, format!("must be finite and ≥ 0, got {value}"));
+        }
+    }
+    let positive = [("lm.tau", lm.tau), ("lm.min_damping", lm.min_damping), ("lm.max_damping", lm.max_damping)];
+    for (name, value) in positive {
+        if !(value.is_finite() && value > 0.0) {
+            return bad(name, format!("must be finite and > 0, got {value}"));
+        }
+    }
+    if lm.min_damping > lm.max_damping {
+        return bad("lm.min_damping", format!("{} exceeds lm.max_damping {}", lm.min_damping, lm.max_damping));
     }
     Ok(())
 }

@@ -41,6 +41,42 @@ fn corrupt(message: impl Into<String>) -> FieldError {
     FieldError::CorruptData { message: message.into() }
 }
 
+/// Most iterations a restored session may have run (a bound far above any real run that keeps
+/// the counters clear of overflow).
+const MAX_SAVED_ITERATIONS: usize = 1 << 40;
+
+/// The iteration counters and the damping state are in range.
+fn check_counts(session: &Session) -> Result<(), FieldError> {
+    if session.iterations > MAX_SAVED_ITERATIONS {
+        return Err(corrupt(format!("saved iteration count {} exceeds {MAX_SAVED_ITERATIONS}", session.iterations)));
+    }
+    if session.stage_iterations > session.iterations || session.slow_iterations > session.iterations {
+        return Err(corrupt("saved stage counters exceed the iteration count"));
+    }
+    let DampingState { mu, nu } = session.damping;
+    if !mu.is_none_or(|mu| mu.is_finite() && mu > 0.0) || !(nu.is_finite() && nu >= 1.0) {
+        return Err(corrupt(format!("saved damping state (μ {mu:?}, ν {nu}) is out of range")));
+    }
+    Ok(())
+}
+
+/// The saved report holds finite, non-negative measures and vertex indices of the mesh (it is
+/// shown as it is until the next step).
+fn check_report(report: &StepReport, vertices: usize) -> Result<(), FieldError> {
+    let e = &report.energies;
+    let measures = [e.fair, e.grad, e.angle, e.frame, e.total, report.angle_error_rms_degrees, report.angle_error_max_degrees, report.damping];
+    if !measures.iter().all(|v| v.is_finite() && *v >= 0.0) {
+        return Err(corrupt("the saved report holds a negative or non-finite measure"));
+    }
+    if let Some(v) = report.singular_vertices.iter().find(|&&v| v as usize >= vertices) {
+        return Err(corrupt(format!("the saved report names singular vertex {v}, but the mesh has {vertices} vertices")));
+    }
+    if report.measured_vertices > vertices {
+        return Err(corrupt(format!("the saved report measured {} vertices, but the mesh has {vertices}", report.measured_vertices)));
+    }
+    Ok(())
+}
+
 impl FieldSolver {
     /// The whole session as bytes: magic, version (little-endian u32), then the state.
     pub fn to_bytes(&self) -> Vec<u8> {
@@ -67,7 +103,11 @@ impl FieldSolver {
 
     /// Restores a session saved by [`FieldSolver::to_bytes`]. Truncated, corrupted or
     /// future-version data gives [`FieldError::CorruptData`] or
-    /// [`FieldError::UnsupportedVersion`], never a panic.
+    /// [`FieldError::UnsupportedVersion`], never a panic. Every restored quantity is checked:
+    /// parameters as in [`FieldSolver::new`], scale factors normal and positive, variables
+    /// finite, the field within ±[`super::FIELD_VALUE_LIMIT`] and the mesh valid once
+    /// un-scaled, counters and damping in range, the saved report finite and about the mesh's
+    /// vertices.
     pub fn from_bytes(bytes: &[u8]) -> Result<FieldSolver, FieldError> {
         if bytes.len() < 8 || bytes[..4] != SESSION_MAGIC {
             return Err(corrupt("not a Lamella field session (bad magic number)"));
@@ -83,10 +123,12 @@ impl FieldSolver {
             .deserialize(body)
             .map_err(|e| corrupt(format!("session data: {e}")))?;
         validate_params(&session.params).map_err(|e| corrupt(format!("saved parameters: {e}")))?;
-        let scales_ok = [session.scales.field, session.scales.length, session.gradient_target].iter().all(|v| v.is_finite() && *v > 0.0);
-        if !scales_ok {
-            return Err(corrupt("saved scale factors are not finite and positive"));
+        let scales = [("field scale", session.scales.field), ("length scale", session.scales.length), ("gradient target", session.gradient_target)];
+        if let Some((name, value)) = scales.iter().find(|(_, v)| !(v.is_normal() && *v > 0.0)) {
+            // Subnormal scales pass `> 0` but un-scale the field to ±inf.
+            return Err(corrupt(format!("saved {name} {value:e} is not a normal positive number")));
         }
+        check_counts(&session)?;
         let mut solver = FieldSolver::assemble(session.unit_mesh, session.params, session.gradient_target, session.scales)?;
         if session.x.len() != solver.x.len() {
             return Err(corrupt(format!("{} saved variables, the mesh needs {}", session.x.len(), solver.x.len())));
@@ -97,6 +139,14 @@ impl FieldSolver {
         if session.stage > solver.params.schedule.len() {
             return Err(corrupt(format!("saved stage {} does not exist", session.stage)));
         }
+        let vertices = solver.problem.mesh().vertex_count();
+        let limit = super::FIELD_VALUE_LIMIT;
+        let unscaled = |v: &f64| v / session.scales.field;
+        if let Some(vertex) = session.x[..vertices].iter().map(unscaled).position(|f| !(f.abs() <= limit)) {
+            return Err(corrupt(format!("the saved field at vertex {vertex} un-scales to {:e}, outside ±{limit:e}", unscaled(&session.x[vertex]))));
+        }
+        solver.problem.mesh().try_scaled(1.0 / session.scales.length).map_err(|e| corrupt(format!("the saved mesh does not un-scale: {e}")))?;
+        check_report(&session.last_report, vertices)?;
         solver.problem.set_weights(stage_weights(&solver.params, session.stage).1);
         solver.x = session.x;
         solver.stage = session.stage;

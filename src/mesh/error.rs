@@ -12,7 +12,7 @@ use std::path::PathBuf;
 /// The constructors report the first problem in this order (the order of the variants):
 /// array lengths, emptiness, non-finite coordinates, index range, repeated indices,
 /// zero-area faces, isolated vertices, non-manifold edges, non-manifold vertices,
-/// inconsistent orientation, several components, disk topology, and finally
+/// inconsistent orientation, several components, disk topology, folded edges, slivers, and finally
 /// geometry that overflows `f64`. [`crate::mesh::diagnose`] reports all of them.
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
@@ -46,6 +46,14 @@ pub enum MeshError {
     /// The mesh is not a topological disk possibly with holes: it needs at least one boundary
     /// loop and Euler characteristic V − E + F = 2 − (number of boundary loops).
     NotDisk { euler_characteristic: i64, boundary_loops: usize },
+    /// The faces `face_a` and `face_b` sharing the edge `(a, b)` fold onto each other: their
+    /// normals make an angle of `angle_degrees`, more than
+    /// [`crate::mesh::MAX_FOLD_DEGREES`] (an inverted or folded-over triangle, e.g. a vertex
+    /// moved across its neighbours).
+    FoldedEdge { a: u32, b: u32, face_a: usize, face_b: usize, angle_degrees: f64 },
+    /// `face` has `ratio` (< [`crate::mesh::MIN_NEIGHBOUR_AREA_RATIO`]) times the area of its
+    /// neighbour `neighbour`: a sliver, numerically degenerate next to it.
+    SliverFace { face: usize, neighbour: usize, ratio: f64 },
     /// A quantity derived from `face` (area, normal, gradient, or the vertex data it feeds)
     /// overflows or underflows `f64` at this coordinate scale.
     GeometryOutOfRange { face: usize },
@@ -103,6 +111,18 @@ impl fmt::Display for MeshError {
                 "mesh is not a topological disk with holes: Euler characteristic {euler_characteristic} \
                  with {boundary_loops} boundary loop(s) (need at least one loop and χ = 2 − loops)"
             ),
+            MeshError::FoldedEdge { a, b, face_a, face_b, angle_degrees } => write!(
+                f,
+                "faces {face_a} and {face_b} fold over at edge ({a}, {b}): their normals are {angle_degrees:.1}° apart \
+                 (more than {}°; an inverted or folded-over triangle)",
+                super::MAX_FOLD_DEGREES
+            ),
+            MeshError::SliverFace { face, neighbour, ratio } => write!(
+                f,
+                "face {face} is a sliver: its area is {ratio:.1e} times that of its neighbour face {neighbour} \
+                 (less than {:e}; move its vertices apart or remove it)",
+                super::MIN_NEIGHBOUR_AREA_RATIO
+            ),
             MeshError::GeometryOutOfRange { face } => write!(
                 f,
                 "geometry of face {face} overflows or underflows f64 at this coordinate scale"
@@ -146,7 +166,9 @@ impl MeshError {
             | MeshError::RepeatedIndex { face, .. }
             | MeshError::ZeroAreaFace { face }
             | MeshError::NonManifoldEdge { face, .. }
+            | MeshError::SliverFace { face, .. }
             | MeshError::GeometryOutOfRange { face } => Some(Culprit::Face(face)),
+            MeshError::FoldedEdge { face_b, .. } => Some(Culprit::Face(face_b)),
             MeshError::InconsistentOrientation { face_b, .. } => Some(Culprit::Face(face_b)),
             _ => None,
         }

@@ -31,7 +31,7 @@ pub use local_quadric::{tangent_basis, vertex_neighbourhood, LocalQuadric};
 pub use star::VertexStar;
 pub use topology::BoundaryEdge;
 pub use trimesh::TriMesh;
-pub use validation::diagnose;
+pub use validation::{diagnose, MAX_FOLD_DEGREES, MIN_NEIGHBOUR_AREA_RATIO};
 
 /// A point or vector in 3-space.
 pub type Vec3 = nalgebra::Vector3<f64>;

@@ -3,7 +3,8 @@
 //! Reads `v x y z` (extra values ignored) and `f` statements with `i`, `i/t`, `i//n`, `i/t/n`
 //! and negative (relative) indices; polygons are fan-triangulated keeping the face-vertex order.
 //! Texture/normal data, grouping, material, smoothing, line and point statements and comments
-//! are ignored. Errors name the 1-based line of the offending statement.
+//! are ignored. Errors name the 1-based line of the offending statement and quote the offending
+//! token clipped to [`crate::input::MAX_QUOTED_CHARS`] characters.
 
 use std::io::Write;
 use std::path::Path;
@@ -11,6 +12,7 @@ use std::path::Path;
 use super::error::{Culprit, MeshError};
 use super::trimesh::TriMesh;
 use super::Vec3;
+use crate::input::{clip, read_limited};
 
 /// Statements that carry nothing the mesh needs.
 const IGNORED: &[&str] = &["vt", "vn", "vp", "o", "g", "s", "mg", "usemtl", "mtllib", "l", "p"];
@@ -41,8 +43,9 @@ impl TriMesh {
     }
 
     /// Reads and parses an OBJ file (invalid UTF-8 is replaced, which only matters in comments).
+    /// Files larger than [`crate::input::MAX_INPUT_BYTES`] are refused with [`MeshError::Io`].
     pub fn read_obj(path: &Path) -> Result<TriMesh, MeshError> {
-        let bytes = std::fs::read(path).map_err(|e| MeshError::Io {
+        let bytes = read_limited(path).map_err(|e| MeshError::Io {
             path: path.to_path_buf(),
             kind: e.kind(),
             message: e.to_string(),
@@ -91,7 +94,7 @@ fn parse_content(text: &str) -> Result<ObjContent, MeshError> {
             Some("v") => {
                 let mut coordinate = || -> Result<f64, MeshError> {
                     let token = tokens.next().ok_or_else(|| parse_error("vertex needs 3 coordinates".into()))?;
-                    token.parse().map_err(|_| parse_error(format!("invalid coordinate '{token}'")))
+                    token.parse().map_err(|_| parse_error(format!("invalid coordinate '{}'", clip(token))))
                 };
                 let p = Vec3::new(coordinate()?, coordinate()?, coordinate()?);
                 content.positions.push(p);
@@ -110,7 +113,7 @@ fn parse_content(text: &str) -> Result<ObjContent, MeshError> {
                 }
             }
             Some(keyword) if IGNORED.contains(&keyword) => {}
-            Some(keyword) => return Err(parse_error(format!("unknown statement '{keyword}'"))),
+            Some(keyword) => return Err(parse_error(format!("unknown statement '{}'", clip(keyword)))),
         }
     }
     Ok(content)
@@ -121,7 +124,7 @@ fn parse_content(text: &str) -> Result<ObjContent, MeshError> {
 /// mesh validation).
 fn resolve_index(token: &str, vertices_so_far: usize) -> Result<u32, String> {
     let text = token.split('/').next().unwrap_or("");
-    let index: i64 = text.parse().map_err(|_| format!("invalid vertex index '{token}'"))?;
+    let index: i64 = text.parse().map_err(|_| format!("invalid vertex index '{}'", clip(token)))?;
     let resolved = if index > 0 {
         index - 1
     } else if index < 0 {

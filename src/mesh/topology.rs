@@ -71,6 +71,12 @@ impl EdgeTable {
         self.run_starts.windows(2).map(|w| &self.halfedges[w[0]..w[1]])
     }
 
+    /// The edges with two faces: `([a, b], face_a, face_b)`, `a < b`, the faces in index order,
+    /// in edge order.
+    pub(crate) fn interior_edges(&self) -> impl Iterator<Item = ([u32; 2], usize, usize)> + '_ {
+        self.runs().filter(|run| run.len() == 2).map(|run| ([run[0].key.0, run[0].key.1], run[0].face as usize, run[1].face as usize))
+    }
+
     /// Undirected edges `[a, b]` with `a < b`, sorted.
     pub(crate) fn edges(&self) -> Vec<[u32; 2]> {
         self.runs().map(|run| [run[0].key.0, run[0].key.1]).collect()

@@ -11,6 +11,7 @@ use super::gradient::face_gradients;
 use super::normals::{face_normals_and_areas, vertex_normals};
 use super::star::{Stars, VertexStar};
 use super::topology::BoundaryEdge;
+use super::triangle::Triangle;
 use super::validation::{validate, ValidTopology};
 use super::voronoi_area::{mixed_voronoi_areas, normalized};
 use super::Vec3;
@@ -259,6 +260,18 @@ impl TriMesh {
     /// Axis-aligned bounding box (min corner, max corner).
     pub fn bounding_box(&self) -> (Vec3, Vec3) {
         self.bounding_box
+    }
+
+    /// The face with the smallest corner angle, and that angle in degrees (the first such face
+    /// on ties): where the mesh is closest to degenerate, named when a linear system built on it
+    /// turns out singular.
+    pub fn sharpest_corner(&self) -> (usize, f64) {
+        let smallest = |f: usize| {
+            let triangle = Triangle::of(&self.positions, &self.faces[f]);
+            (0..3).map(|i| triangle.corner_angle(i)).fold(f64::INFINITY, f64::min)
+        };
+        let (face, angle) = (0..self.faces.len()).map(|f| (f, smallest(f))).fold((0, f64::INFINITY), |best, next| if next.1 < best.1 { next } else { best });
+        (face, angle.to_degrees())
     }
 }
 

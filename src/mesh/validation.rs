@@ -11,7 +11,11 @@
 //! 7. more than one connected component;
 //! 8. not a disk with holes (only checked once the faces are all valid and form a connected,
 //!    consistently oriented manifold, since boundary loops and χ are meaningless otherwise);
-//! 9. derived geometry out of the range of f64 (checked on the built mesh, so only when
+//! 9. folded edges: neighbouring faces whose normals are more than [`MAX_FOLD_DEGREES`] apart
+//!    (inverted or folded-over triangles), then slivers: faces whose area is less than
+//!    [`MIN_NEIGHBOUR_AREA_RATIO`] times a neighbour's (both checked on the same oriented
+//!    manifold);
+//! 10. derived geometry out of the range of f64 (checked on the built mesh, so only when
 //!    everything else passed).
 
 use super::error::MeshError;
@@ -143,10 +147,66 @@ fn run_checks(positions: &[Vec3], faces: &[[u32; 3]], findings: &mut Findings) -
     {
         findings.errors.push(error);
     }
+    if findings.stop() {
+        return None;
+    }
+    findings.errors.extend(folded_edges(positions, faces, &table));
+    if findings.stop() {
+        return None;
+    }
+    findings.errors.extend(slivers(positions, faces, &table));
     if !findings.errors.is_empty() {
         return None;
     }
     Some(ValidTopology { edges: table.edges(), boundary_edges, boundary_loops })
+}
+
+/// Largest angle between the normals of two faces sharing an edge, in degrees. Beyond it the
+/// surface folds back onto itself there (a fold of 180° is a triangle turned over onto its
+/// neighbour): the one-ring of a vertex is no longer a disk over its tangent plane, level curves
+/// double back, and the field's normal equations become singular. Creases of a designed surface
+/// stay far below it.
+pub const MAX_FOLD_DEGREES: f64 = 120.0;
+
+/// One [`MeshError::FoldedEdge`] per edge whose two faces' normals are more than
+/// [`MAX_FOLD_DEGREES`] apart (faces consistently oriented, corners finite, areas non-zero).
+fn folded_edges(positions: &[Vec3], faces: &[[u32; 3]], table: &EdgeTable) -> Vec<MeshError> {
+    let limit = MAX_FOLD_DEGREES.to_radians().cos();
+    table
+        .interior_edges()
+        .filter_map(|([a, b], face_a, face_b)| {
+            let (na, _) = Triangle::of(positions, &faces[face_a]).normal_and_area();
+            let (nb, _) = Triangle::of(positions, &faces[face_b]).normal_and_area();
+            let cosine = na.dot(&nb).clamp(-1.0, 1.0);
+            (cosine < limit).then(|| MeshError::FoldedEdge { a, b, face_a, face_b, angle_degrees: cosine.acos().to_degrees() })
+        })
+        .collect()
+}
+
+/// Smallest ratio of a face's area to the area of a face sharing an edge with it. A face far
+/// smaller than its neighbours (a vertex a hair's breadth from an edge) passes the zero-area
+/// test of its own shape but makes the linear systems of the initial fields singular in floating
+/// point; graded meshes change areas by far less between neighbours.
+pub const MIN_NEIGHBOUR_AREA_RATIO: f64 = 1e-8;
+
+/// One [`MeshError::SliverFace`] per face whose area is less than
+/// [`MIN_NEIGHBOUR_AREA_RATIO`] times that of a face sharing an edge with it (the first such
+/// neighbour in edge order), in face order.
+fn slivers(positions: &[Vec3], faces: &[[u32; 3]], table: &EdgeTable) -> Vec<MeshError> {
+    let areas: Vec<f64> = faces.iter().map(|f| Triangle::of(positions, f).normal_and_area().1).collect();
+    let mut found: Vec<Option<(usize, f64)>> = vec![None; faces.len()];
+    for (_, a, b) in table.interior_edges() {
+        let (small, large) = if areas[a] <= areas[b] { (a, b) } else { (b, a) };
+        let ratio = areas[small] / areas[large];
+        if ratio < MIN_NEIGHBOUR_AREA_RATIO && found[small].is_none() {
+            found[small] = Some((large, ratio));
+        }
+    }
+    found
+        .iter()
+        .enumerate()
+        .filter_map(|(face, f)| f.map(|(neighbour, ratio)| MeshError::SliverFace { face, neighbour, ratio }))
+        .collect()
 }
 
 /// Index range and repetition checks; returns which faces have valid, distinct indices.

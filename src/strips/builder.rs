@@ -11,7 +11,7 @@ use rayon::prelude::*;
 use super::error::{StripError, StripWarning};
 use super::frenet::{initial_rulings, unit_edges};
 use super::metrics::{PatternMetrics, StripMetrics, StripShape};
-use super::params::{StripParams, StripWeights};
+use super::params::{StripParams, StripWeights, MAX_STRIP_ITERATIONS, MAX_STRIP_ROUNDS};
 use super::problem::{binormal, position, ruling, vec3, StripProblem};
 use super::strip::{RectifyingStrip, SkippedCurve, StripPattern};
 use super::surface_distance::SurfaceProjector;
@@ -83,6 +83,20 @@ fn validate(params: &StripParams) -> Result<(), StripError> {
     }
     if w.planarity <= 0.0 {
         return Err(StripError::InvalidParameter { name: "weights.planarity", message: "must be > 0".into() });
+    }
+    if params.binormal_rounds > MAX_STRIP_ROUNDS {
+        let message = format!("must be at most {MAX_STRIP_ROUNDS}, got {}", params.binormal_rounds);
+        return Err(StripError::InvalidParameter { name: "binormal_rounds", message });
+    }
+    let counts = [
+        ("iterations_per_round", params.iterations_per_round),
+        ("final_iterations", params.final_iterations),
+        ("polish_iterations", params.polish_iterations),
+    ];
+    for (name, value) in counts {
+        if value > MAX_STRIP_ITERATIONS {
+            return Err(StripError::InvalidParameter { name, message: format!("must be at most {MAX_STRIP_ITERATIONS}, got {value}") });
+        }
     }
     Ok(())
 }

@@ -19,7 +19,7 @@ pub use builder::rectifying_strips;
 pub use error::{StripError, StripWarning};
 pub use frenet::{discrete_binormals, initial_rulings, principal_normals, unit_edges, version_one_rulings};
 pub use metrics::{PatternMetrics, StripGeometry, StripMetrics, StripShape};
-pub use params::{StripParams, StripWeights};
+pub use params::{StripParams, StripWeights, MAX_STRIP_ITERATIONS, MAX_STRIP_ROUNDS};
 pub use strip::{RectifyingStrip, SkippedCurve, StripPattern};
 pub use surface_distance::{SurfacePoint, SurfaceProjector};
 pub use unrolling::{straightness, unroll, Unrolling};

@@ -29,6 +29,13 @@ impl Default for StripWeights {
     }
 }
 
+/// Most binormal-strip rounds ([`StripParams::binormal_rounds`]) a computation accepts.
+pub const MAX_STRIP_ROUNDS: usize = 32;
+/// Most Levenberg–Marquardt iterations of one strip stage ([`StripParams::iterations_per_round`],
+/// [`StripParams::final_iterations`], [`StripParams::polish_iterations`]); with
+/// [`MAX_STRIP_ROUNDS`] this bounds a strip to 17,500 iterations.
+pub const MAX_STRIP_ITERATIONS: usize = 500;
+
 /// What strips to build and how hard to optimise them.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct StripParams {
@@ -37,7 +44,8 @@ pub struct StripParams {
     /// Strip width: the distance between the two straight boundaries of the flat strip.
     pub width: f64,
     pub weights: StripWeights,
-    /// Binormal-strip stage: rounds of (project onto the surface, then Levenberg–Marquardt).
+    /// Binormal-strip stage: rounds of (project onto the surface, then Levenberg–Marquardt),
+    /// at most [`MAX_STRIP_ROUNDS`].
     pub binormal_rounds: usize,
     /// Levenberg–Marquardt iterations per binormal-strip round and in the regularised
     /// rectifying-strip round.

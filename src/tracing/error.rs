@@ -22,6 +22,8 @@ pub enum TraceError {
     NoFirstSegment { a: u32, b: u32, t: f64, start_angle_degrees: f64 },
     /// Zero start points were requested.
     ZeroCurves,
+    /// More start points were requested than [`super::MAX_STARTS`].
+    TooManyStarts { count: usize },
     /// Boundary loop `index` does not exist (the mesh has `count`).
     LoopOutOfRange { index: usize, count: usize },
     /// Boundary segment `index` does not exist (there are `count`).
@@ -60,6 +62,9 @@ impl fmt::Display for TraceError {
                 "no first segment leaves edge ({a}, {b}) at t = {t} under alpha = {start_angle_degrees}° into the surface"
             ),
             TraceError::ZeroCurves => write!(f, "zero start points requested"),
+            TraceError::TooManyStarts { count } => {
+                write!(f, "{count} start points requested, at most {} are allowed", super::MAX_STARTS)
+            }
             TraceError::LoopOutOfRange { index, count } => {
                 write!(f, "boundary loop {index} does not exist (the mesh has {count})")
             }

@@ -31,9 +31,10 @@ pub use curve::{StopReason, TracedCurve};
 pub use error::TraceError;
 pub use guide_set::{trace_guide_set, GuideSet};
 pub use intersections::{intersections, Crossing, IntersectionReport};
-pub use options::TraceOptions;
+pub use options::{TraceOptions, MAX_TRACE_POINTS};
 pub use order::{check_order, OrderDefect};
 pub use seeding::{
     boundary_segments, boundary_start, evenly_spaced_starts, nearest_boundary_point, BoundarySegment, DEFAULT_CORNER_TURN_DEGREES,
+    MAX_STARTS,
 };
 pub use tracer::Tracer;

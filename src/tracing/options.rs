@@ -2,13 +2,16 @@
 
 use super::TraceError;
 
+/// Largest [`TraceOptions::max_points`]: 10,000,000 points (a few hundred MB per curve).
+pub const MAX_TRACE_POINTS: usize = 10_000_000;
+
 /// Limits and tolerances of [`super::Tracer::trace`]. Lengths are relative to the mesh's mean
 /// edge length, so the defaults suit any unit.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TraceOptions {
     /// Stop once the curve is at least this long (caller units); `f64::INFINITY` for no limit.
     pub max_length: f64,
-    /// Stop once the curve has this many points (≥ 2).
+    /// Stop once the curve has this many points (2 to [`MAX_TRACE_POINTS`]).
     pub max_points: usize,
     /// `d0` of Sec. 3.2.1 as a fraction of the mean edge length: the next point must be farther
     /// than `d0` from the current one, which keeps discrete osculating planes stable.
@@ -48,7 +51,7 @@ impl TraceOptions {
         if self.max_length.is_nan() || self.max_length <= 0.0 {
             return bad("max_length", self.max_length);
         }
-        if self.max_points < 2 {
+        if !(2..=MAX_TRACE_POINTS).contains(&self.max_points) {
             return bad("max_points", self.max_points as f64);
         }
         if !(self.min_step_ratio.is_finite() && self.min_step_ratio >= 0.0) {

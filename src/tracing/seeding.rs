@@ -66,10 +66,14 @@ pub fn boundary_segments(mesh: &TriMesh, loop_index: usize, corner_turn_degrees:
         .collect())
 }
 
+/// Most start points one [`evenly_spaced_starts`] call returns.
+pub const MAX_STARTS: usize = 10_000;
+
 /// `count` start points on segment `segment_index` of `segments`, evenly spaced by arc length:
 /// at arc lengths `(i + ½)·L / count` from the segment's first vertex, so neighbours are `L / count`
 /// apart and the corners are avoided. Each is an [`EdgePoint`] on a boundary edge, its edge
-/// given in loop order.
+/// given in loop order. `count` is 1 to [`MAX_STARTS`] ([`TraceError::ZeroCurves`],
+/// [`TraceError::TooManyStarts`]).
 pub fn evenly_spaced_starts(
     mesh: &TriMesh,
     segments: &[BoundarySegment],
@@ -81,6 +85,9 @@ pub fn evenly_spaced_starts(
         .ok_or(TraceError::SegmentOutOfRange { index: segment_index, count: segments.len() })?;
     if count == 0 {
         return Err(TraceError::ZeroCurves);
+    }
+    if count > MAX_STARTS {
+        return Err(TraceError::TooManyStarts { count });
     }
     let polyline = BoundaryPolyline::new(mesh, &segment.vertices)?;
     Ok((0..count)

@@ -106,6 +106,25 @@ static void bad_inputs(const LmlField *field, double lo, double hi)
     CHECK_STATUS(lml_curves_new_uniform(field, 3, -0.5, &curves), LML_STATUS_INVALID_ARGUMENT);
     CHECK_MESSAGE("spacing");
     CHECK_STATUS(lml_curves_new_uniform(field, 3, 1.0, NULL), LML_STATUS_INVALID_ARGUMENT);
+    /* Sizes from the caller are bounded before anything is allocated (they used to abort the host). */
+    curves = poisoned();
+    CHECK_STATUS(lml_curves_new_uniform(field, (size_t)1 << (sizeof(size_t) > 4 ? 40 : 31), 0.0, &curves), LML_STATUS_INVALID_ARGUMENT);
+    CHECK(curves == NULL);
+    CHECK_MESSAGE("at most 10000");
+    CHECK_STATUS(lml_curves_new_uniform(field, LML_MAX_LEVELS + 1, 0.0, &curves), LML_STATUS_INVALID_ARGUMENT);
+    expect_refused(field, levels, 1, 1e-9, LML_STATUS_INVALID_ARGUMENT, "points", __LINE__);
+    {
+        double *many = malloc((LML_MAX_LEVELS + 1) * sizeof(double));
+        size_t i;
+        CHECK(many != NULL);
+        if (many != NULL) {
+            for (i = 0; i <= LML_MAX_LEVELS; i++) {
+                many[i] = levels[1];
+            }
+            expect_refused(field, many, LML_MAX_LEVELS + 1, 0.0, LML_STATUS_INVALID_ARGUMENT, "10001 levels", __LINE__);
+            free(many);
+        }
+    }
 
     CHECK_STATUS(lml_curves_count(NULL, &count), LML_STATUS_INVALID_ARGUMENT);
     lml_curves_free(NULL);

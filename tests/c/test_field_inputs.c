@@ -73,6 +73,9 @@ void test_field_inputs(const Cylinder *c)
     memcpy(values, c->field, c->vertex_count * sizeof(double));
     values[5] = NAN;
     expect_refused(mesh, values, c->vertex_count, &params, LML_STATUS_INVALID_ARGUMENT, "vertex 5", __LINE__);
+    /* One huge value is named as such, not reported as a constant field. */
+    values[5] = 1e300;
+    expect_refused(mesh, values, c->vertex_count, &params, LML_STATUS_INVALID_ARGUMENT, "1e300 at vertex 5 is out of range", __LINE__);
     values[5] = -INFINITY;
     expect_refused(mesh, values, c->vertex_count, &params, LML_STATUS_INVALID_ARGUMENT, "vertex 5", __LINE__);
     for (i = 0; i < c->vertex_count; i++) {

@@ -582,6 +582,12 @@ static void bad_inputs(const LmlMesh *mesh, const Cylinder *c, const LmlEdgePoin
     CHECK_MESSAGE("boundary segment 9 does not exist (there are 4)");
     CHECK_STATUS(lml_boundary_starts(mesh, 0, 30.0, 0, 0, starts, 2, &needed), LML_STATUS_INVALID_ARGUMENT);
     CHECK_MESSAGE("zero start points");
+    /* A count from the caller is bounded before anything is allocated (it used to abort the host). */
+    CHECK_STATUS(lml_boundary_starts(mesh, 0, 30.0, 0, UINT32_MAX, starts, 2, &needed), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("at most 10000");
+    CHECK_STATUS(lml_boundary_starts(mesh, 0, 30.0, 0, LML_MAX_STARTS + 1, starts, 2, &needed), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_STATUS(lml_boundary_starts(mesh, 0, 30.0, 0, LML_MAX_STARTS, NULL, 0, &needed), LML_STATUS_BUFFER_TOO_SMALL);
+    CHECK(needed == LML_MAX_STARTS);
     CHECK_STATUS(lml_boundary_starts(mesh, 0, 30.0, 0, 1, starts, 2, NULL), LML_STATUS_INVALID_ARGUMENT);
     CHECK_MESSAGE("needed");
     CHECK_STATUS(lml_boundary_start_at(mesh, 0, 1.5, &p), LML_STATUS_INVALID_ARGUMENT);

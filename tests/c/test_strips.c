@@ -86,12 +86,26 @@ static void expect_refused(const LmlCurves *curves, const LmlStripParams *params
 static void bad_inputs(const LmlCurves *curves)
 {
     LmlStripParams params, bad;
-    size_t count;
+    size_t count, i;
     LmlPatternMetrics pattern;
     CHECK_STATUS(lml_strip_params_default(THETA, WIDTH, &params), LML_STATUS_OK);
     expect_refused(NULL, &params, "curves", __LINE__);
     expect_refused(curves, NULL, "params", __LINE__);
     CHECK_STATUS(lml_strips_new(curves, &params, NULL), LML_STATUS_INVALID_ARGUMENT);
+    /* Iteration counts are bounded: UINT32_MAX used to run for minutes. */
+    for (i = 0; i < 4; i++) {
+        uint32_t *counts[4];
+        const char *names[4] = {"binormal_rounds", "iterations_per_round", "final_iterations", "polish_iterations"};
+        counts[0] = &bad.binormal_rounds;
+        counts[1] = &bad.iterations_per_round;
+        counts[2] = &bad.final_iterations;
+        counts[3] = &bad.polish_iterations;
+        bad = params;
+        *counts[i] = UINT32_MAX;
+        expect_refused(curves, &bad, names[i], __LINE__);
+        *counts[i] = (i == 0 ? LML_MAX_STRIP_ROUNDS : LML_MAX_STRIP_ITERATIONS) + 1;
+        expect_refused(curves, &bad, names[i], __LINE__);
+    }
     bad = params;
     bad.width = 0.0;
     expect_refused(curves, &bad, "width", __LINE__);

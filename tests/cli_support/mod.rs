@@ -55,6 +55,19 @@ pub fn lamella_threads(cwd: &Path, threads: usize, args: &[&str]) -> Output {
         .expect("run lamella")
 }
 
+/// Runs `args` in `dir`, checks exit code 2 with a single stderr line containing every
+/// `needle`, and returns that line.
+pub fn assert_bad_input(dir: &Path, args: &[&str], needles: &[&str]) -> String {
+    let output = lamella(dir, args);
+    let message = stderr(&output);
+    assert_eq!(output.status.code(), Some(2), "{args:?}: {message}");
+    assert_eq!(message.trim_end().lines().count(), 1, "{args:?}: one line, got {message}");
+    for needle in needles {
+        assert!(message.contains(needle), "{args:?}: `{needle}` not in {message}");
+    }
+    message
+}
+
 pub fn stderr(output: &Output) -> String {
     String::from_utf8_lossy(&output.stderr).into_owned()
 }

@@ -27,6 +27,42 @@ pub fn grid(nx: usize, ny: usize, h: f64) -> Soup {
     grid_with(nx, ny, h, |_, _| true)
 }
 
+/// The n × n grid of unit cells on a gentle dome, with a vertex `eps` inside the middle of the
+/// boundary edge y = 0 of cell (n/2, 0): it splits that cell's first triangle (face n, which
+/// becomes the sliver of area ≈ eps / 2 on the boundary) and adds two faces at the end.
+pub fn sliver_grid(n: usize, eps: f64) -> Soup {
+    let (mut positions, mut faces) = mapped(grid(n, n, 1.0), |p| {
+        let (x, y) = (p.x - n as f64 / 2.0, p.y - n as f64 / 2.0);
+        Vec3::new(p.x, p.y, 0.1 * (x * x + y * y) / 16.0)
+    });
+    let [a, b, c] = faces[n];
+    let m = positions.len() as u32;
+    let (pa, pb) = (positions[a as usize], positions[b as usize]);
+    positions.push(Vec3::new((pa.x + pb.x) / 2.0, eps, (pa.z + pb.z) / 2.0));
+    faces[n] = [a, b, m];
+    faces.extend([[a, m, c], [m, b, c]]);
+    (positions, faces)
+}
+
+/// `mesh` with its first interior vertex whose neighbours are all interior moved across the
+/// column (x, y) of its first neighbour, half an edge beyond it: the triangles between them turn
+/// over (a fold), while the topology stays that of a disk.
+pub fn folded(mesh: &TriMesh) -> Soup {
+    let mut positions = mesh.positions().to_vec();
+    let deep = |v: usize| !mesh.is_boundary_vertex(v) && mesh.star(v).neighbours.iter().all(|&n| !mesh.is_boundary_vertex(n as usize));
+    let v = (0..mesh.vertex_count()).find(|&v| deep(v)).expect("a deep interior vertex");
+    let (from, to) = (positions[v], positions[mesh.star(v).neighbours[0] as usize]);
+    positions[v].x = to.x + 0.5 * (to.x - from.x);
+    positions[v].y = to.y + 0.5 * (to.y - from.y);
+    (positions, mesh.faces().to_vec())
+}
+
+/// OBJ text of a soup (1-based indices).
+pub fn obj_text((positions, faces): &Soup) -> String {
+    let vertices = positions.iter().map(|p| format!("v {} {} {}\n", p.x, p.y, p.z));
+    vertices.chain(faces.iter().map(|f| format!("f {} {} {}\n", f[0] + 1, f[1] + 1, f[2] + 1))).collect()
+}
+
 /// Drops vertices used by no face and renumbers the rest in order.
 pub fn compact((positions, faces): Soup) -> Soup {
     let mut new_id = vec![u32::MAX; positions.len()];

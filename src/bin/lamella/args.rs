@@ -21,7 +21,7 @@ pub enum Command {
     /// The whole pipeline: field → level curves → rectifying strips → cut sheet, plots, report.
     Design(DesignArgs),
     /// Mesh validation report: counts, boundary loops, disk or not, bounding box, mean edge
-    /// length and every problem found.
+    /// length and the problems found (the first 100 one per line, the rest counted).
     Info(InfoArgs),
     /// Trace guide P-curves (paper Sec. 3.2.1, Eq. 4) from evenly spaced points of one side of the
     /// boundary. Writes guides.json (for `field --guides-file` / `design --guides-file`),
@@ -65,7 +65,8 @@ pub struct OutArgs {
     /// Output directory [default: lamella-out].
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
-    /// Replace an existing output directory (otherwise it is refused).
+    /// Replace an existing output directory that a previous Lamella run wrote (it holds the marker
+    /// .lamella-output and only the files listed there); any other existing path is refused.
     #[arg(long)]
     pub force: bool,
 }

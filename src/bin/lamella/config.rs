@@ -4,6 +4,8 @@ use crate::args::{ConfigArgs, FamilyFlags, FieldFlags, GuideSeedingFlags, MeshAr
 use lamella::mesh::Vec3;
 use lamella::strips::DEFAULT_TOLERANCE_DEGREES;
 use crate::error::{CliError, CliResult};
+use crate::mesh_input::read_text;
+use lamella::input::{clip, clip_words};
 use serde::Deserialize;
 use std::path::{Path, PathBuf};
 
@@ -198,7 +200,7 @@ pub fn resolve_family(theta: Option<f64>, name: Option<&str>) -> CliResult<Optio
         },
         Some(other) => Err(CliError::bad_input(format!(
             "parameter --family = {} is not asymptotic, geodesic or pseudo-geodesic",
-            crate::error::clip(other)
+            clip(other)
         ))),
     }
 }
@@ -236,11 +238,11 @@ fn resolve_start(flags: Option<&StartFlags>, file: &ConfigFile) -> CliResult<Sta
 /// `X,Y,Z` as a vector.
 fn parse_direction(text: &str) -> CliResult<Vec3> {
     let values: Vec<f64> = text.split(',').map(|v| v.trim().parse::<f64>()).collect::<Result<_, _>>().map_err(|_| {
-        CliError::bad_input(format!("parameter --direction = {} is not three numbers X,Y,Z", crate::error::clip(text)))
+        CliError::bad_input(format!("parameter --direction = {} is not three numbers X,Y,Z", clip(text)))
     })?;
     match values.as_slice() {
         [x, y, z] => Ok(Vec3::new(*x, *y, *z)),
-        _ => Err(CliError::bad_input(format!("parameter --direction = {} is not three numbers X,Y,Z", crate::error::clip(text)))),
+        _ => Err(CliError::bad_input(format!("parameter --direction = {} is not three numbers X,Y,Z", clip(text)))),
     }
 }
 
@@ -250,7 +252,7 @@ fn parse_guide_side(text: &str) -> CliResult<GuideSide> {
     }
     text.parse::<usize>()
         .map(GuideSide::Index)
-        .map_err(|_| CliError::bad_input(format!("parameter --guide-side = {text} is not a side number or 'longest'")))
+        .map_err(|_| CliError::bad_input(format!("parameter --guide-side = {} is not a side number or 'longest'", clip(text))))
 }
 
 /// θ must lie in [0°, 180°].
@@ -267,10 +269,9 @@ fn out_of_range(name: &str, value: impl std::fmt::Display, range: &str) -> CliEr
 }
 
 fn read_config(path: &Path) -> CliResult<ConfigFile> {
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::bad_input(format!("cannot read config {}: {e}", path.display())))?;
+    let text = read_text(path)?;
     toml::from_str(&text).map_err(|e| {
-        let message = e.message().replace('\n', " ");
+        let message = clip_words(e.message());
         match e.span() {
             Some(span) => {
                 let line = text.get(..span.start).map_or(1, |before| before.matches('\n').count() + 1);

@@ -3,6 +3,7 @@
 //! report, into one output directory.
 use crate::args::DesignArgs;
 use crate::config::{Flags, Settings};
+use crate::console::err_line;
 use crate::error::{CliError, CliResult};
 use crate::field_cmd::{family_measure, field_summary, optimise, write_field_files};
 use crate::field_files::HistoryRow;
@@ -47,7 +48,7 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     let measure = family_measure(&mesh, &solver, &run.curves)?;
     let strips_seconds = strips_started.elapsed().as_secs_f64();
     if verbosity == Verbosity::Verbose {
-        warning_lines(&run).iter().for_each(|w| eprintln!("{w}"));
+        warning_lines(&run).iter().for_each(err_line);
     }
 
     let mut surface = Vec::new();
@@ -71,7 +72,7 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
             strips_summary(&run),
             started.elapsed().as_secs_f64()
         ),
-    );
+    )?;
     verdict(&run)
 }
 

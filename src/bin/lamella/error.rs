@@ -1,5 +1,11 @@
-//! The two ways a command fails, and their exit codes: bad input (2) or an internal failure (1).
+//! The ways a command fails, and their exit codes: bad input (2), an internal failure or a
+//! failed write to stdout (1), no acceptable family (3, outputs written), or a closed stdout
+//! pipe (0, quietly).
 use std::fmt;
+
+/// Longest error message printed, in characters (a safety net: every message quotes tokens and
+/// lists in bounded form already; paths and library messages are not otherwise bounded).
+const MAX_MESSAGE_CHARS: usize = 4000;
 
 /// A failed command: the one-line message printed on stderr and its exit code.
 #[derive(Debug)]
@@ -8,6 +14,11 @@ pub enum CliError {
     BadInput(String),
     /// A computation failed on valid input: exit code 1.
     Internal(String),
+    /// Writing to stdout failed (e.g. a full disk): exit code 1.
+    Write(String),
+    /// The reader of stdout closed the pipe (`lamella metrics … | head -c 1`): the command stops
+    /// quietly with exit code 0.
+    ClosedPipe,
     /// The computation ran and wrote its outputs, but they miss the asked angle (or have
     /// flipped quads): exit code 3; the message starts with "no acceptable family".
     NoAcceptableFamily(String),
@@ -26,8 +37,27 @@ impl CliError {
     pub fn exit_code(&self) -> u8 {
         match self {
             CliError::BadInput(_) => 2,
-            CliError::Internal(_) => 1,
+            CliError::Internal(_) | CliError::Write(_) => 1,
             CliError::NoAcceptableFamily(_) => 3,
+            CliError::ClosedPipe => 0,
+        }
+    }
+
+    /// The message for stderr: one line (line breaks escaped), at most [`MAX_MESSAGE_CHARS`]
+    /// characters; `None` for a closed pipe, which ends quietly.
+    pub fn message(&self) -> Option<String> {
+        match self {
+            CliError::ClosedPipe => None,
+            _ => {
+                let text = self.to_string().replace('\n', " ");
+                let clipped = if text.chars().count() > MAX_MESSAGE_CHARS {
+                    let head: String = text.chars().take(MAX_MESSAGE_CHARS).collect();
+                    format!("{head}… (message cut at {MAX_MESSAGE_CHARS} characters)")
+                } else {
+                    text
+                };
+                Some(clipped)
+            }
         }
     }
 }
@@ -35,18 +65,12 @@ impl CliError {
 impl fmt::Display for CliError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            CliError::BadInput(message) | CliError::Internal(message) | CliError::NoAcceptableFamily(message) => f.write_str(message),
+            CliError::BadInput(message) | CliError::Internal(message) | CliError::Write(message) | CliError::NoAcceptableFamily(message) => {
+                f.write_str(message)
+            }
+            CliError::ClosedPipe => f.write_str("standard output was closed"),
         }
     }
 }
 
 pub type CliResult<T> = Result<T, CliError>;
-
-/// A user-supplied token for an error message, cut to 80 characters with "…".
-pub fn clip(text: &str) -> String {
-    const LIMIT: usize = 80;
-    match text.char_indices().nth(LIMIT) {
-        Some((cut, _)) => format!("{}…", &text[..cut]),
-        None => text.to_string(),
-    }
-}

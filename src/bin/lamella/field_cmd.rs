@@ -4,7 +4,7 @@ use crate::args::FieldArgs;
 use crate::config::{Flags, Settings};
 use crate::error::{CliError, CliResult};
 use crate::field_files::{energies_csv, field_csv, read_energies_csv, HistoryRow};
-use crate::mesh_input::{load_mesh, mesh_name};
+use crate::mesh_input::{load_mesh, mesh_name, read_bytes};
 use crate::output_dir::OutputDir;
 use crate::progress::{note, summary, Progress, Verbosity};
 use crate::report_json::{self, Timings};
@@ -40,7 +40,7 @@ pub fn optimise(
 /// Field errors caused by the input are bad input; the rest are internal failures.
 pub fn field_error(error: FieldError) -> CliError {
     match error {
-        FieldError::Solver(_) => CliError::internal(format!("field optimisation failed: {error}")),
+        FieldError::Solver(_) | FieldError::SolverFailedNear { .. } => CliError::internal(format!("field optimisation failed: {error}")),
         _ => CliError::bad_input(format!("field: {error}")),
     }
 }
@@ -110,7 +110,7 @@ pub fn run(args: &FieldArgs) -> CliResult<()> {
     let mut start_description = None;
     let (mut solver, mut history, source, mesh) = match &args.resume {
         Some(path) => {
-            let bytes = std::fs::read(path).map_err(|e| CliError::bad_input(format!("cannot read {}: {e}", path.display())))?;
+            let bytes = read_bytes(path)?;
             let solver = FieldSolver::from_bytes(&bytes)
                 .map_err(|e| CliError::bad_input(format!("{}: not a usable field session: {e}", path.display())))?;
             let beside = path.with_file_name("energies.csv");
@@ -140,6 +140,5 @@ pub fn run(args: &FieldArgs) -> CliResult<()> {
     out.write("report.json", report)?;
     let target = out.target().display().to_string();
     out.commit()?;
-    summary(verbosity, &format!("{}\nwrote {target}/ (field.csv, session.bin, energies.csv, convergence.svg, report.json)", field_summary(&solver, &measure)));
-    Ok(())
+    summary(verbosity, &format!("{}\nwrote {target}/ (field.csv, session.bin, energies.csv, convergence.svg, report.json)", field_summary(&solver, &measure)))
 }

@@ -2,6 +2,7 @@
 //! energy history, so a resumed optimisation extends it).
 use crate::error::{CliError, CliResult};
 use crate::mesh_input::read_text;
+use lamella::input::clip;
 use lamella::field::{Energies, StepReport};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -37,9 +38,14 @@ pub fn field_csv(field: &[f64]) -> String {
     text
 }
 
-/// Reads field.csv: one finite number per non-comment line.
+/// Reads field.csv (up to the input limit): one finite number per non-comment line.
 pub fn read_field_csv(path: &Path) -> CliResult<Vec<f64>> {
-    let text = read_text(path)?;
+    parse_field_csv(&read_text(path)?, &path.display().to_string())
+}
+
+/// The values of field.csv `text` from the file `name` (named in errors, which quote the
+/// offending line clipped to 80 characters).
+pub fn parse_field_csv(text: &str, name: &str) -> CliResult<Vec<f64>> {
     let mut values = Vec::new();
     for (i, line) in text.lines().enumerate() {
         let line = line.trim();
@@ -50,9 +56,9 @@ pub fn read_field_csv(path: &Path) -> CliResult<Vec<f64>> {
             Ok(v) if v.is_finite() => values.push(v),
             _ => {
                 return Err(CliError::bad_input(format!(
-                    "{}: line {}: expected one finite number, found `{line}`",
-                    path.display(),
-                    i + 1
+                    "{name}: line {}: expected one finite number, found `{}`",
+                    i + 1,
+                    clip(line)
                 )))
             }
         }

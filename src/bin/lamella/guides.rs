@@ -3,6 +3,8 @@
 //! `design`), and drawn as guides.obj.
 use crate::config::GuideSide;
 use crate::error::{CliError, CliResult};
+use crate::mesh_input::read_text;
+use lamella::input::clip_words;
 use lamella::mesh::{EdgePoint, TriMesh};
 use lamella::tracing::{intersections, trace_guide_set, IntersectionReport, StopReason, TracedCurve};
 use serde::{Deserialize, Serialize};
@@ -121,9 +123,16 @@ pub fn guides_json(guides: &Guides) -> String {
 }
 
 /// Reads guides.json: θ and each guide's edge points.
+/// The file is read up to the input limit.
 pub fn read_guides_json(path: &Path) -> CliResult<(f64, Vec<Vec<EdgePoint>>)> {
-    let text = std::fs::read_to_string(path).map_err(|e| CliError::bad_input(format!("cannot read {}: {e}", path.display())))?;
-    let file: GuidesFile = serde_json::from_str(&text).map_err(|e| CliError::bad_input(format!("{}: not a guides file: {e}", path.display())))?;
+    parse_guides_json(&read_text(path)?, &path.display().to_string())
+}
+
+/// θ and the guides' edge points in the JSON `text` of the file `name` (named in errors, which
+/// clip quoted input).
+pub fn parse_guides_json(text: &str, name: &str) -> CliResult<(f64, Vec<Vec<EdgePoint>>)> {
+    let file: GuidesFile =
+        serde_json::from_str(text).map_err(|e| CliError::bad_input(format!("{name}: not a guides file: {}", clip_words(&e.to_string()))))?;
     let curves = file.guides.iter().map(|g| g.points.iter().map(|p| EdgePoint { edge: p.edge, t: p.t }).collect()).collect();
     Ok((file.theta_degrees, curves))
 }

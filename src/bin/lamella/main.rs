@@ -1,10 +1,12 @@
 //! `lamella`: the command-line front door of the crate. Without arguments it designs a θ = 60°
 //! rectifying strip pattern on the built-in hall roof into `./lamella-out/`; subcommands run the
-//! pipeline's steps one at a time on the same files. Exit codes: 0 success, 2 bad input,
-//! 1 internal failure, 3 no acceptable family (outputs written, but the strips miss θ).
+//! pipeline's steps one at a time on the same files. Exit codes: 0 success (or stdout closed by
+//! its reader), 2 bad input, 1 internal failure or a failed write to stdout, 3 no acceptable
+//! family (outputs written, but the strips miss θ).
 
 mod args;
 mod config;
+mod console;
 mod design;
 mod error;
 mod field_cmd;
@@ -35,11 +37,13 @@ fn main() -> ExitCode {
     match run(&cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(CliError::NoAcceptableFamily(message)) => {
-            eprintln!("lamella: {message}");
+            console::err_line(format!("lamella: {message}"));
             ExitCode::from(3)
         }
         Err(error) => {
-            eprintln!("lamella: error: {error}");
+            if let Some(message) = error.message() {
+                console::err_line(format!("lamella: error: {message}"));
+            }
             ExitCode::from(error.exit_code())
         }
     }

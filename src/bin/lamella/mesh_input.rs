@@ -1,6 +1,7 @@
 //! The input surface: an OBJ file (with every problem listed when it is not a valid mesh) or the
 //! built-in hall roof.
 use crate::error::{CliError, CliResult};
+use lamella::input::{read_limited, summarise_list, MAX_LISTED_ITEMS};
 use lamella::mesh::TriMesh;
 use lamella::surfaces::hall_roof;
 use std::path::Path;
@@ -21,7 +22,8 @@ pub fn load_mesh(path: Option<&Path>) -> CliResult<TriMesh> {
     }
 }
 
-/// Reads an OBJ mesh; an invalid mesh is reported with all its problems on one line.
+/// Reads an OBJ mesh; an invalid mesh is reported on one line with its problem count and the
+/// first [`MAX_LISTED_ITEMS`] problems ("… and N more").
 pub fn read_mesh(path: &Path) -> CliResult<TriMesh> {
     let text = read_text(path)?;
     TriMesh::parse_obj(&text).map_err(|first| {
@@ -29,16 +31,20 @@ pub fn read_mesh(path: &Path) -> CliResult<TriMesh> {
             Ok(problems) if !problems.is_empty() => problems,
             _ => vec![first],
         };
-        let list: Vec<String> = problems.iter().map(ToString::to_string).collect();
-        CliError::bad_input(format!("{}: invalid mesh ({} problem(s)): {}", path.display(), list.len(), list.join("; ")))
+        let list = summarise_list(&problems, MAX_LISTED_ITEMS, "; ");
+        CliError::bad_input(format!("{}: invalid mesh ({} problem(s)): {list}", path.display(), problems.len()))
     })
 }
 
-/// The file's text (invalid UTF-8 replaced, as the OBJ reader does).
+/// The file's bytes, up to the input limit [`lamella::input::MAX_INPUT_BYTES`] (a larger file,
+/// a device such as `/dev/zero` or a directory is bad input).
+pub fn read_bytes(path: &Path) -> CliResult<Vec<u8>> {
+    read_limited(path).map_err(|e| CliError::bad_input(format!("cannot read {}: {e}", path.display())))
+}
+
+/// The file's text (invalid UTF-8 replaced, as the OBJ reader does), read as [`read_bytes`].
 pub fn read_text(path: &Path) -> CliResult<String> {
-    std::fs::read(path)
-        .map(|bytes| String::from_utf8_lossy(&bytes).into_owned())
-        .map_err(|e| CliError::bad_input(format!("cannot read {}: {e}", path.display())))
+    read_bytes(path).map(|bytes| String::from_utf8_lossy(&bytes).into_owned())
 }
 
 /// How a report names the surface.

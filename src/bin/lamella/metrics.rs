@@ -2,12 +2,14 @@
 //! surface (closest-point normals and distances).
 use crate::args::MetricsArgs;
 use crate::config::{check_theta, check_tolerance, resolve_family, DEFAULT_THETA};
+use crate::console::out_line;
 use crate::error::{CliError, CliResult};
 use crate::mesh_input::load_mesh;
 use crate::strip_obj::{read_strips_obj, StripShape};
 use lamella::mesh::{TriMesh, Vec3};
 use lamella::strips::{unroll, PatternMetrics, StripMetrics, SurfaceProjector, Verdict, DEFAULT_TOLERANCE_DEGREES};
 use serde_json::json;
+use std::fmt::Write as _;
 
 /// Table 4 of one stored strip (at least 2 rulings, as read).
 fn measure(projector: &SurfaceProjector, shape: &StripShape, theta: f64, diagonal: f64) -> CliResult<StripMetrics> {
@@ -46,20 +48,21 @@ pub fn run(args: &MetricsArgs) -> CliResult<()> {
     if args.json {
         let strips: Vec<_> = shapes.iter().zip(&metrics).map(|(s, m)| json!({ "name": s.name, "metrics": m })).collect();
         let document = json!({ "theta_degrees": theta, "strips": strips, "overall": overall, "verdict": verdict, "acceptable": verdict.is_acceptable() });
-        println!("{}", serde_json::to_string_pretty(&document).unwrap_or_default());
-        return Ok(());
+        return out_line(serde_json::to_string_pretty(&document).unwrap_or_default());
     }
-    println!("{:<12} {:>10} {:>12} {:>11} {:>11} {:>11} {:>9} {:>7}", "strip", "length m", "max diff θ°", "e_straight", "E_planar", "max planar", "Appro %", "flipped");
+    let mut table = format!("{:<12} {:>10} {:>12} {:>11} {:>11} {:>11} {:>9} {:>7}\n", "strip", "length m", "max diff θ°", "e_straight", "E_planar", "max planar", "Appro %", "flipped");
     for (s, m) in shapes.iter().zip(&metrics) {
-        println!(
+        let _ = writeln!(
+            table,
             "{:<12} {:>10.3} {:>12.4} {:>11.2e} {:>11.2e} {:>11.2e} {:>9.4} {:>7}",
             s.name, m.length, m.max_diff_theta_degrees, m.e_straight, m.e_planar, m.max_planar, m.appro_percent, m.flipped_quads
         );
     }
-    println!(
+    let _ = write!(
+        table,
         "{:<12} {:>10} {:>12.4} {:>11.2e} {:>11.2e} {:>11.2e} {:>9.4} {:>7}",
         "overall", "", overall.max_diff_theta_degrees, overall.max_e_straight, overall.e_planar, overall.max_planar, overall.appro_percent, overall.flipped_quads
     );
-    println!("strip planes: max angle error {:.3}°; {}", overall.max_quad_angle_error_degrees, verdict.message());
-    Ok(())
+    let _ = write!(table, "\nstrip planes: max angle error {:.3}°; {}", overall.max_quad_angle_error_degrees, verdict.message());
+    out_line(table)
 }

@@ -1,6 +1,8 @@
 //! Progress of the field optimisation: a bar with iteration, energy and ETA on a terminal, plain
 //! lines otherwise, every iteration under `--verbose`, nothing under `--quiet`.
 use crate::args::VerbosityArgs;
+use crate::console::{err_line, out_line};
+use crate::error::CliResult;
 use lamella::field::StepReport;
 use std::io::{IsTerminal, Write};
 use std::time::Instant;
@@ -53,7 +55,7 @@ impl Progress {
     pub fn iteration(&mut self, r: &StepReport) {
         match self.verbosity {
             Verbosity::Quiet => {}
-            Verbosity::Verbose => eprintln!(
+            Verbosity::Verbose => err_line(format_args!(
                 "iteration {:5}  stage {}  E_angle {:9.3e}  E_frame {:9.3e}  E_fair {:9.3e}  E_grad {:9.3e}  total {:9.3e}  angle error max {:.3}°  singular {}",
                 r.iterations,
                 r.stage,
@@ -64,14 +66,14 @@ impl Progress {
                 r.energies.total,
                 r.angle_error_max_degrees,
                 r.singular_vertices.len()
-            ),
+            )),
             Verbosity::Normal if self.terminal => self.draw_bar(r),
             Verbosity::Normal => {
                 if r.iterations % PLAIN_EVERY == 0 || r.converged {
-                    eprintln!(
+                    err_line(format_args!(
                         "iteration {:5}  E_angle {:9.3e}  total {:9.3e}  angle error max {:.3}°",
                         r.iterations, r.energies.angle, r.energies.total, r.angle_error_max_degrees
-                    );
+                    ));
                 }
             }
         }
@@ -102,7 +104,7 @@ impl Progress {
     /// Ends the bar's line.
     pub fn finish(&mut self) {
         if self.bar_drawn {
-            eprintln!();
+            err_line("");
             self.bar_drawn = false;
         }
     }
@@ -111,13 +113,14 @@ impl Progress {
 /// A status line on stderr unless quiet.
 pub fn note(verbosity: Verbosity, message: &str) {
     if verbosity != Verbosity::Quiet {
-        eprintln!("{message}");
+        err_line(message);
     }
 }
 
-/// A summary line on stdout unless quiet.
-pub fn summary(verbosity: Verbosity, message: &str) {
+/// A summary line on stdout unless quiet; a failed write is an error (see [`out_line`]).
+pub fn summary(verbosity: Verbosity, message: &str) -> CliResult<()> {
     if verbosity != Verbosity::Quiet {
-        println!("{message}");
+        out_line(message)?;
     }
+    Ok(())
 }

@@ -4,6 +4,7 @@
 //! file, guide P-curves traced from the boundary or read from guides.json (Eq. 5–7), or sketched
 //! strokes with the target angle estimated from them (Fig. 14).
 use crate::config::{check_theta, Settings, Start};
+use crate::console::err_line;
 use crate::error::{CliError, CliResult};
 use crate::field_cmd::field_error;
 use crate::field_files::read_field_csv;
@@ -70,8 +71,8 @@ pub fn start_solver(mesh: &TriMesh, settings: &Settings, verbosity: Verbosity) -
         }
         Start::Strokes(path) => {
             let strokes = read_strokes(path)?;
-            let fitted = field_from_strokes(mesh, &strokes, &StrokeOptions::default()).map_err(|e| start_error("strokes", e))?;
-            let estimate = estimate_target_angle(mesh, &fitted.field, &fitted.samples).map_err(|e| start_error("strokes", e))?;
+            let fitted = field_from_strokes(mesh, &strokes, &StrokeOptions::default()).map_err(|e| start_error(mesh, "strokes", e))?;
+            let estimate = estimate_target_angle(mesh, &fitted.field, &fitted.samples).map_err(|e| start_error(mesh, "strokes", e))?;
             let theta = if settings.theta_given { settings.theta } else { estimate };
             let description = json!({
                 "kind": "strokes",
@@ -98,7 +99,7 @@ fn search(mesh: &TriMesh, theta: f64, verbosity: Verbosity) -> CliResult<Started
                     (None, Some(score)) => format!("score {score:.2} (RMS {:.2}°, max {:.2}°)", c.rms_error_degrees, c.max_error_degrees),
                     (None, None) => "not scored".into(),
                 };
-                eprintln!("start candidate {}: {}: {outcome}", search.candidates().len() - 1, c.kind.describe());
+                err_line(format_args!("start candidate {}: {}: {outcome}", search.candidates().len() - 1, c.kind.describe()));
             }
         }
         if !more {
@@ -135,7 +136,7 @@ fn search(mesh: &TriMesh, theta: f64, verbosity: Verbosity) -> CliResult<Started
 }
 
 fn from_guides(mesh: &TriMesh, curves: &[Vec<EdgePoint>]) -> CliResult<(Vec<f64>, f64)> {
-    let guide = field_from_guide_curves(mesh, curves, &GuideCurveOptions::default()).map_err(|e| start_error("guides", e))?;
+    let guide = field_from_guide_curves(mesh, curves, &GuideCurveOptions::default()).map_err(|e| start_error(mesh, "guides", e))?;
     Ok((guide.field, guide.gradient_target))
 }
 
@@ -153,10 +154,34 @@ pub fn read_field_for(mesh: &TriMesh, path: &Path) -> CliResult<Vec<f64>> {
     Ok(field)
 }
 
-/// Initialisation errors caused by the input are bad input; a singular system is internal.
-fn start_error(what: &str, error: InitialisationError) -> CliError {
+/// Initialisation errors are bad input. A singular linear system comes from the mesh (the
+/// systems are regular on any non-degenerate mesh): the message names its sharpest corner.
+fn start_error(mesh: &TriMesh, what: &str, error: InitialisationError) -> CliError {
     match error {
-        InitialisationError::SingularSystem { .. } => CliError::internal(format!("{what}: {error}")),
+        InitialisationError::SingularSystem { .. } => {
+            let (face, degrees) = mesh.sharpest_corner();
+            CliError::bad_input(format!(
+                "{what}: {error}; the mesh is likely numerically degenerate: its sharpest corner is {degrees:.2e}° in face {face}"
+            ))
+        }
         _ => CliError::bad_input(format!("{what}: {error}")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::CliError;
+    use lamella::surfaces::hall_roof;
+
+    #[test]
+    fn a_singular_initial_system_is_bad_input_naming_the_sharpest_corner() {
+        let mesh = hall_roof(60).into_mesh().expect("valid roof");
+        let (face, _) = mesh.sharpest_corner();
+        let error = start_error(&mesh, "guides", InitialisationError::SingularSystem { stage: "conformal map" });
+        assert!(matches!(error, CliError::BadInput(_)), "{error}");
+        assert_eq!(error.exit_code(), 2);
+        let message = error.to_string();
+        assert!(message.contains("conformal map") && message.contains(&format!("in face {face}")), "{message}");
     }
 }

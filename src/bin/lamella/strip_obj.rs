@@ -137,7 +137,7 @@ pub fn read_strips_obj(path: &Path) -> CliResult<Vec<StripShape>> {
         return Err(CliError::bad_input(format!("{}: no strips (no `g` groups)", path.display())));
     }
     if let Some(short) = shapes.iter().find(|s| s.left.len() < 2) {
-        return Err(CliError::bad_input(format!("{}: strip `{}` has fewer than 2 rulings", path.display(), short.name)));
+        return Err(CliError::bad_input(format!("{}: strip `{}` has fewer than 2 rulings", path.display(), lamella::input::clip(&short.name))));
     }
     Ok(shapes)
 }

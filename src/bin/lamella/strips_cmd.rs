@@ -2,6 +2,7 @@
 //! edge length, and the rectifying strips along them (paper Sec. 3.4).
 use crate::args::StripsArgs;
 use crate::config::{Flags, Settings};
+use crate::console::err_line;
 use crate::error::{CliError, CliResult};
 use crate::start_field::read_field_for;
 use crate::mesh_input::{load_mesh, mesh_name};
@@ -10,7 +11,7 @@ use crate::progress::{note, summary, Verbosity};
 use crate::report_json::{self, Timings};
 use crate::strip_obj::{curves_obj, rulings_obj, strips_obj};
 use crate::svg::preview::preview_svg;
-use lamella::curves::{extract_level_curves, uniform_levels, LevelCurve};
+use lamella::curves::{extract_level_curves, resample_all, uniform_levels, LevelCurve};
 use lamella::mesh::{TriMesh, Vec3};
 use lamella::strips::{rectifying_strips, StripParams, StripPattern};
 use std::time::Instant;
@@ -63,12 +64,8 @@ pub fn build_strips(mesh: &TriMesh, field: &[f64], theta: f64, count: usize, wid
         None if spacing.is_finite() && spacing > 0.0 => WIDTH_PER_SPACING * spacing,
         None => return Err(CliError::bad_input("the field is constant: no level curves, give --width")),
     };
-    let curves = extract_level_curves(mesh, field, &levels)
-        .map_err(|e| CliError::bad_input(format!("level curves: {e}")))?
-        .iter()
-        .map(|c| c.resampled(mesh.mean_edge_length()))
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(|e| CliError::internal(format!("resampling level curves: {e}")))?;
+    let curves = extract_level_curves(mesh, field, &levels).map_err(|e| CliError::bad_input(format!("level curves: {e}")))?;
+    let curves = resample_all(&curves, mesh.mean_edge_length()).map_err(|e| CliError::internal(format!("resampling level curves: {e}")))?;
     let params = StripParams { tolerance_degrees: tolerance, ..StripParams::new(theta, width) };
     let pattern = rectifying_strips(mesh, &curves, &params).map_err(|e| CliError::bad_input(format!("strips: {e}")))?;
     Ok(StripRun { curves, pattern, width, spacing })
@@ -133,7 +130,7 @@ pub fn run(args: &StripsArgs) -> CliResult<()> {
     note(verbosity, &format!("strips: {} level curves at θ = {}°", settings.strips, settings.theta));
     let run = build_strips(&mesh, &field, settings.theta, settings.strips, settings.width, settings.tolerance)?;
     if verbosity == Verbosity::Verbose {
-        warning_lines(&run).iter().for_each(|w| eprintln!("{w}"));
+        warning_lines(&run).iter().for_each(err_line);
     }
     let strips_seconds = started.elapsed().as_secs_f64();
     write_strip_files(&out, &mesh, &run)?;
@@ -142,6 +139,6 @@ pub fn run(args: &StripsArgs) -> CliResult<()> {
     out.write("report.json", report_json::document(&parameters, None, Some(&run), &timings))?;
     let target = out.target().display().to_string();
     out.commit()?;
-    summary(verbosity, &format!("{}\nwrote {target}/ (curves.obj, strips.obj, rulings.obj, preview.svg, report.json)", strips_summary(&run)));
+    summary(verbosity, &format!("{}\nwrote {target}/ (curves.obj, strips.obj, rulings.obj, preview.svg, report.json)", strips_summary(&run)))?;
     crate::design::verdict(&run)
 }

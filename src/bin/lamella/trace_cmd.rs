@@ -63,6 +63,5 @@ pub fn run(args: &TraceArgs) -> CliResult<()> {
             report.self_intersections.len()
         )
     };
-    summary(verbosity, &format!("guides: {}\n{warning}\nwrote {target}/ (guides.json, guides.obj, report.json)", lengths.join(", ")));
-    Ok(())
+    summary(verbosity, &format!("guides: {}\n{warning}\nwrote {target}/ (guides.json, guides.obj, report.json)", lengths.join(", ")))
 }

@@ -19,6 +19,5 @@ pub fn run(args: &UnrollArgs) -> CliResult<()> {
     out.write("unrolled.svg", cut_sheet_svg(&pieces))?;
     out.commit()?;
     let total: f64 = unrollings.iter().map(|u| u.length).sum();
-    summary(verbosity, &format!("{} strips, total length {total:.2} m\nwrote {}/unrolled.svg", pieces.len(), target.display()));
-    Ok(())
+    summary(verbosity, &format!("{} strips, total length {total:.2} m\nwrote {}/unrolled.svg", pieces.len(), target.display()))
 }
