@@ -12,7 +12,7 @@ namespace Lamella
     {
         internal readonly FieldHandle Handle;
 
-        private FieldSolver(FieldHandle handle)
+        internal FieldSolver(FieldHandle handle)
         {
             Handle = handle;
         }
