@@ -31,6 +31,13 @@ namespace Lamella.Tests
             Expect(Status.InvalidArgument, () => StripParams.Default(60, -1), "width");
             string missing = Path.Combine(Path.GetTempPath(), "lamella-no-such-file.obj");
             Expect(Status.InvalidArgument, () => LamellaMesh.ReadObj(missing), "lamella-no-such-file.obj");
+            // A search for θ out of range: refused by the constructor (as the header promises) or, today, by the first step.
+            var beyond = FieldParams.Default(Family.PseudoGeodesic, 60);
+            beyond.ThetaDegrees = 200;
+            using (var square = LamellaMesh.FromArrays(Square, SquareTriangles))
+            {
+                Expect(Status.InvalidArgument, () => { using (var search = new StartSearch(square, beyond)) search.Step(); }, "theta");
+            }
         }
 
         [Test]
