@@ -31,12 +31,20 @@ namespace Lamella.Tests
             Expect(Status.InvalidArgument, () => StripParams.Default(60, -1), "width");
             string missing = Path.Combine(Path.GetTempPath(), "lamella-no-such-file.obj");
             Expect(Status.InvalidArgument, () => LamellaMesh.ReadObj(missing), "lamella-no-such-file.obj");
-            // A search for θ out of range: refused by the constructor (as the header promises) or, today, by the first step.
+            // A search for θ out of range: refused by the constructor (as the header promises) or, today, by a step before
+            // any candidate is scored.
             var beyond = FieldParams.Default(Family.PseudoGeodesic, 60);
             beyond.ThetaDegrees = 200;
-            using (var square = LamellaMesh.FromArrays(Square, SquareTriangles))
+            var c = new Cylinder(12, 8, 3);
+            using (var mesh = LamellaMesh.FromArrays(c.Xyz, c.Triangles))
             {
-                Expect(Status.InvalidArgument, () => { using (var search = new StartSearch(square, beyond)) search.Step(); }, "theta");
+                Expect(Status.InvalidArgument, () =>
+                {
+                    using (var search = new StartSearch(mesh, beyond))
+                    {
+                        while (search.Step()) Assert.IsNull(search.Winner);
+                    }
+                }, "theta");
             }
         }
 
