@@ -11,7 +11,8 @@ namespace Lamella.Grasshopper
     /// <summary>
     /// Rectifying Strips: a developable strip along each level curve (paper Sec. 3.4): planar quads whose rulings lie
     /// in the curves' rectifying planes, the rulings and outlines, and the strips unrolled flat and laid out on a plane
-    /// with cutting outlines and labels that match the strips in space.
+    /// with cutting outlines and labels that match the strips in space. Strips that miss θ by more than the library's
+    /// tolerance (or have flipped quads) are still output, with an error naming them (the verdict) and Acceptable false.
     /// </summary>
     public class RectifyingStripsComponent : LamellaComponent
     {
@@ -47,7 +48,9 @@ namespace Lamella.Grasshopper
             pManager.AddTextParameter("Labels", "L", "One label per strip (S0, S1, …), the same for a strip in space and its flat twin.", GH_ParamAccess.list);
             pManager.AddPointParameter("Label Points", "LP", "Where each strip's label goes in space: the middle point of its centre line.", GH_ParamAccess.list);
             pManager.AddPointParameter("Flat Label Points", "FLP", "Where each strip's label goes on the flat layout: the middle point of its unrolled centre line.", GH_ParamAccess.list);
-            pManager.AddTextParameter("Metrics", "Q", "Per strip: label, curve, length, diff_θ (°), e_straight, max planarity residual, Appro, warnings (paper Table 4).", GH_ParamAccess.list);
+            pManager.AddTextParameter("Metrics", "Q", "Per strip: label, curve, length, diff_θ (°), e_straight, max planarity residual, Appro, strip-plane angle error (°), warnings (paper Table 4).", GH_ParamAccess.list);
+            pManager.AddBooleanParameter("Acceptable", "A", "True when every strip's plane meets θ within the library's tolerance (2°) and no quad is flipped: the curves form an acceptable family. False: the strips are still output, but miss θ (see Verdict).", GH_ParamAccess.item);
+            pManager.AddTextParameter("Verdict", "V", "One line: for an acceptable pattern the tolerance and the worst quad; otherwise the library's message naming the strips that miss θ, the worst point and what to try.", GH_ParamAccess.item);
         }
 
         protected override void Solve(IGH_DataAccess DA)
@@ -73,6 +76,9 @@ namespace Lamella.Grasshopper
             }
 
             Strips strips = Keep(DA, Strips.Build(curves.Curves, StripParams.Default(curves.ThetaDegrees, width)));
+            Verdict verdict = strips.Verdict;
+            // Still output: the designer sees where the strips miss θ.
+            if (!verdict.IsAcceptable) AddRuntimeMessage(GH_RuntimeMessageLevel.Error, verdict.Message);
             foreach (SkippedCurve skipped in strips.Skipped())
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, "curve " + skipped.Curve + " carries no strip: " + skipped.Warnings);
@@ -97,6 +103,8 @@ namespace Lamella.Grasshopper
             DA.SetDataList(8, RhinoConversion.Points(StripArrays.MiddlePoints(centres, pointOffsets)));
             DA.SetDataList(9, RhinoConversion.Points(StripArrays.MiddlePoints(flatCentres, pointOffsets)));
             DA.SetDataList(10, StripLabels.Describe(metrics));
+            DA.SetData(11, verdict.IsAcceptable);
+            DA.SetData(12, verdict.ToString());
         }
     }
 }

@@ -16,8 +16,9 @@ namespace Lamella.Grasshopper
     /// switched off and on. Solve solves to convergence within one solution (for Hops, Rhino.Compute, optimisers). A
     /// field restarts when its own inputs change or on Reset. The document keeps each field's values, θ, parameters,
     /// report and input signature (compressed), so a reopened document shows its fields without solving again. The
-    /// start field is the height along Direction, or comes from traced guides (paper Eq. 5–7) or from sketched strokes,
-    /// whose estimated θ then replaces the θ input (Sec. 3.2.2).
+    /// start field comes from traced guides (paper Eq. 5–7), from sketched strokes, whose estimated θ then replaces the θ
+    /// input (Sec. 3.2.2), or is the height along Direction; with none of them the library's start search chooses it
+    /// (one candidate per live solution, all at once with Solve) and the message names the chosen start.
     /// </summary>
     public class StripFieldComponent : LamellaComponent
     {
@@ -50,7 +51,8 @@ namespace Lamella.Grasshopper
         {
             pManager.AddMeshParameter("Mesh", "M", MeshDescription, GH_ParamAccess.item);
             pManager.AddNumberParameter("Theta", "θ", "Target angle between the curves' binormals and the surface normal, in degrees, 0–180 (90: geodesics, 0: asymptotic curves). Replaced by the estimate from Strokes when they are connected. Default 60.", GH_ParamAccess.item, 60.0);
-            pManager.AddVectorParameter("Direction", "D", "Without Guides or Strokes, the start field is the height along this vector (unitless direction); its level curves should roughly follow the wanted strips. Default Z.", GH_ParamAccess.item, new Vector3d(0, 0, 1));
+            pManager.AddVectorParameter("Direction", "D", "Optional, without Guides or Strokes: the start field is the height along this vector (unitless direction), whose level curves should roughly follow the wanted strips. Default: none: the library's start search tries heights along the surface's principal directions (and, if none leads to the family, guides from each boundary side), solves briefly from each and continues from the best (named in a remark).", GH_ParamAccess.item);
+            pManager[2].Optional = true;
             LamellaParam<GuidesGoo>.AddTo(pManager, new GuidesParam(), "Optional guides from Trace P-Curve, traced on this mesh, ordered and not crossing: the start field interpolates them (guide i on the level F = i, paper Eq. 5–7) and, when Spacing is 0, their spacing sets the gradient target. Default: none.");
             pManager[3].Optional = true;
             pManager.AddCurveParameter("Strokes", "St", "Optional curves sketched on (or near, within a mesh edge of) the surface along the wanted strips, at least two, not crossing, in the order the family should run: the start field follows them and the θ they suggest replaces the θ input (shown in the message and the θ output). Not together with Guides. Default: none.", GH_ParamAccess.list);
@@ -125,7 +127,8 @@ namespace Lamella.Grasshopper
             bool reset = false, run = false, solveNow = false;
             var weights = new List<double>();
             DA.GetData(1, ref thetaDegrees);
-            DA.GetData(2, ref direction);
+            // Not given: the start search chooses the start (unless guides or strokes give it).
+            bool directionGiven = DA.GetData(2, ref direction);
             if (!TryGooValue<GuidesGoo, GuidesData>(DA, 3, "Lamella guides", out guides)) return;
             DA.GetDataList(4, strokeCurves);
             DA.GetData(5, ref spacing);
@@ -149,9 +152,10 @@ namespace Lamella.Grasshopper
                 double strokeSpacing = 0.5 * StrokeArrays.MeanEdgeLength(clean.Xyz, clean.Triangles);
                 strokes = strokeCurves.ConvertAll(curve => RhinoConversion.CurveToStroke(curve, strokeSpacing));
             }
-            string signature = Signature.Of(clean.Xyz, clean.Triangles, Fingerprint(thetaDegrees, direction, spacing, weights, guides, strokes));
+            Vector3d? height = directionGiven ? direction : (Vector3d?)null;
+            string signature = Signature.Of(clean.Xyz, clean.Triangles, Fingerprint(thetaDegrees, height, spacing, weights, guides, strokes));
             FieldSession session = sessions.Session(iteration, clean.Xyz, clean.Triangles, signature, reset,
-                native => Start(native, clean, signature, thetaDegrees, direction, spacing, weights, guides, strokes));
+                native => Start(native, clean, signature, thetaDegrees, height, spacing, weights, guides, strokes));
             hasField = true;
             if (guides != null && strokes == null && guides.ThetaDegrees != session.ThetaDegrees)
             {
@@ -163,8 +167,23 @@ namespace Lamella.Grasshopper
             // Grasshopper reports any Escape since it was last asked: forget one pressed before Run was switched on.
             else if (live.RunSwitchedOn()) GH_Document.IsEscapeKeyDown();
             FieldReport report = Advance(session, run, solveNow, maxIterations);
+            if (session.IsSearching)
+            {
+                // No field yet: say how far the search is; the next slices (Run) or Solve continue it.
+                lastMessage = StartDescriptions.Progress(session.Candidates);
+                DA.SetData(2, StartDescriptions.Report(session.Candidates, null, null));
+                DA.SetData(4, session.ThetaDegrees);
+                if (!run && !solveNow) AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, "the start search runs with Run or Solve");
+                return;
+            }
+            if (session.ChosenStart.HasValue)
+            {
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, StartDescriptions.Chosen(session.ChosenStart.Value, session.Candidates.Length));
+                if (spacing > 0) AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, "Spacing is not applied to a field from the start search (it keeps its start's spacing); connect Direction, Guides or Strokes to set it");
+            }
             if (report.IsConverged) converged++;
             lastMessage = (strokes != null ? string.Format(CultureInfo.InvariantCulture, "θ ≈ {0:0.#}° from strokes · ", session.ThetaDegrees) : "") +
+                (session.ChosenStart.HasValue ? StartDescriptions.Short(session.ChosenStart.Value) + " · " : "") +
                 (report.IsConverged ? "converged · " : "") +
                 string.Format(CultureInfo.InvariantCulture, "iteration {0} · E_angle {1:0.00e+0}", report.Iterations, report.EnergyAngle);
             if (report.SingularVertexCount > 0)
@@ -177,7 +196,7 @@ namespace Lamella.Grasshopper
             double[] values = clean.ToInputVertices(session.Values(), 1, double.NaN);
             DA.SetData(0, new FieldGoo(new FieldData(solver, session.ThetaDegrees)));
             DA.SetDataList(1, values);
-            DA.SetData(2, report.Describe());
+            DA.SetData(2, session.ChosenStart.HasValue ? StartDescriptions.Report(session.Candidates, session.ChosenStart.Value.Index, report) : report.Describe());
             DA.SetData(3, report.AngleErrorMaxDegrees);
             DA.SetData(4, session.ThetaDegrees);
             DA.SetData(5, RhinoConversion.ColouredCopy(mesh, FieldColours.Argb(values)));
@@ -252,15 +271,17 @@ namespace Lamella.Grasshopper
 
         /// <summary>
         /// Every input value that shapes the session besides the mesh, each list preceded by its length so that no two
-        /// different inputs give the same sequence: θ (unless strokes replace it), direction, spacing, weights, the
-        /// guides' points and offsets, the strokes' points.
+        /// different inputs give the same sequence: θ (unless strokes replace it), direction (if given), spacing, weights,
+        /// the guides' points and offsets, the strokes' points.
         /// </summary>
-        private static double[] Fingerprint(double thetaDegrees, Vector3d direction, double spacing, List<double> weights, GuidesData guides, List<double[]> strokes)
+        private static double[] Fingerprint(double thetaDegrees, Vector3d? direction, double spacing, List<double> weights, GuidesData guides, List<double[]> strokes)
         {
             var values = new List<double>();
             Action<IList<double>> add = list => { values.Add(list.Count); values.AddRange(list); };
             add(strokes == null ? new[] { thetaDegrees } : new double[0]);
-            add(new[] { direction.X, direction.Y, direction.Z, spacing });
+            // With a direction the sequence is the one documents saved before the start search have (their Direction
+            // kept its default Z), so their fields are restored; without one the length prefix tells the two apart.
+            add(direction.HasValue ? new[] { direction.Value.X, direction.Value.Y, direction.Value.Z, spacing } : new[] { spacing });
             add(weights);
             add(guides == null ? new double[0] : guides.Guides.Points());
             add(guides == null ? new double[0] : Array.ConvertAll(guides.Guides.Offsets(), o => (double)o));
@@ -269,11 +290,15 @@ namespace Lamella.Grasshopper
             return values.ToArray();
         }
 
-        /// <summary>A new session on <paramref name="mesh"/> from its start field: guides, strokes or the height along Direction.</summary>
-        private static FieldSession Start(LamellaMesh mesh, CleanMesh clean, string signature, double thetaDegrees, Vector3d direction,
+        /// <summary>
+        /// A new session on <paramref name="mesh"/> from its start field: guides, strokes or the height along Direction;
+        /// with none of them, a session that first runs the library's start search. θ 0° and 180° (asymptotic curves) and
+        /// 90° (geodesics) need nothing special: the library names the family by θ.
+        /// </summary>
+        private static FieldSession Start(LamellaMesh mesh, CleanMesh clean, string signature, double thetaDegrees, Vector3d? direction,
             double spacing, List<double> weights, GuidesData guides, List<double[]> strokes)
         {
-            double[] start;
+            double[] start = null;
             double gradientTarget = 0;
             if (guides != null)
             {
@@ -284,9 +309,9 @@ namespace Lamella.Grasshopper
             {
                 start = InitialField.FromStrokes(mesh, strokes, out thetaDegrees);
             }
-            else
+            else if (direction.HasValue)
             {
-                start = StartField.Height(clean.Xyz, direction.X, direction.Y, direction.Z);
+                start = StartField.Height(clean.Xyz, direction.Value.X, direction.Value.Y, direction.Value.Z);
             }
             FieldParams parameters = FieldParams.Default(Family.PseudoGeodesic, thetaDegrees);
             parameters.GradientTarget = spacing > 0 ? 1.0 / spacing : gradientTarget;
@@ -295,7 +320,7 @@ namespace Lamella.Grasshopper
                 parameters.WarmUp = 0;
                 parameters.Weights = new Weights(weights[0], weights[1], weights[2]);
             }
-            return FieldSession.Start(mesh, start, parameters, signature);
+            return start == null ? FieldSession.Search(mesh, parameters, signature) : FieldSession.Start(mesh, start, parameters, signature);
         }
 
         private void ScheduleNextStep(int delayMs)

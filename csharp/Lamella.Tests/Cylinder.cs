@@ -73,6 +73,38 @@ namespace Lamella.Tests
             return Vec.Degrees(Vec.Dot(b, Vec.Cross(n, t)) < 0 ? -bn : bn);
         }
 
+        /// <summary>How far a field's frames are from the analytic ones (see <see cref="FrameErrors"/>).</summary>
+        public struct Frames
+        {
+            /// <summary>Vertices with a frame (non-zero binormal).</summary>
+            public int Framed;
+            /// <summary>Max |signed angle(b, n) − θ| in degrees, the sign of b from the side vector (paper Fig. 8).</summary>
+            public double WorstAngle;
+            /// <summary>Max | |b| − 1 |.</summary>
+            public double WorstUnit;
+            /// <summary>Max |u · n|: the side vector should be tangent.</summary>
+            public double WorstTangent;
+        }
+
+        /// <summary>The frames of <paramref name="field"/> (on a mesh with vertices <paramref name="xyz"/> on this cylinder) against the analytic normal at θ.</summary>
+        public static Frames FrameErrors(FieldSolver field, double[] xyz, double thetaDegrees)
+        {
+            double[] b = field.Binormals(), u = field.SideVectors();
+            var frames = new Frames();
+            for (int v = 0; v < xyz.Length / 3; v++)
+            {
+                double[] bv = Vec.At(b, v), uv = Vec.At(u, v), n = Normal(xyz, v);
+                if (Vec.Norm(bv) == 0) continue; // boundary vertex
+                frames.Framed++;
+                frames.WorstUnit = Math.Max(frames.WorstUnit, Math.Abs(Vec.Norm(bv) - 1));
+                // b is fixed up to sign: the side vector picks the family (paper Fig. 8).
+                double bn = Vec.Dot(bv, n) * (Vec.Dot(bv, uv) < 0 ? -1 : 1);
+                frames.WorstAngle = Math.Max(frames.WorstAngle, Math.Abs(Vec.Degrees(bn) - thetaDegrees));
+                frames.WorstTangent = Math.Max(frames.WorstTangent, Math.Abs(Vec.Dot(uv, n)));
+            }
+            return frames;
+        }
+
         /// <summary>The isometric development of a point: (arc length around the axis from the left side, height).</summary>
         public static double[] Development(double[] p) => new[] { Radius * Math.Atan2(p[1], p[0]), p[2] };
 

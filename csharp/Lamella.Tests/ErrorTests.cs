@@ -31,6 +31,21 @@ namespace Lamella.Tests
             Expect(Status.InvalidArgument, () => StripParams.Default(60, -1), "width");
             string missing = Path.Combine(Path.GetTempPath(), "lamella-no-such-file.obj");
             Expect(Status.InvalidArgument, () => LamellaMesh.ReadObj(missing), "lamella-no-such-file.obj");
+            // A search for θ out of range: refused by the constructor (as the header promises) or, today, by a step before
+            // any candidate is scored.
+            var beyond = FieldParams.Default(Family.PseudoGeodesic, 60);
+            beyond.ThetaDegrees = 200;
+            var c = new Cylinder(12, 8, 3);
+            using (var mesh = LamellaMesh.FromArrays(c.Xyz, c.Triangles))
+            {
+                Expect(Status.InvalidArgument, () =>
+                {
+                    using (var search = new StartSearch(mesh, beyond))
+                    {
+                        while (search.Step()) Assert.IsNull(search.Winner);
+                    }
+                }, "theta");
+            }
         }
 
         [Test]
@@ -55,6 +70,46 @@ namespace Lamella.Tests
             using (var mesh = LamellaMesh.FromArrays(Square, SquareTriangles))
             {
                 Expect(Status.SingularField, () => new FieldSolver(mesh, new double[4], FieldParams.Default(Family.Geodesic, 0)), "constant");
+                // A search with no scored candidate has no field to give; it stays usable.
+                using (var search = new StartSearch(mesh, FieldParams.Default(Family.PseudoGeodesic, 60)))
+                {
+                    Expect(Status.SingularField, () => search.TakeField(), "no candidate start");
+                    Assert.IsFalse(search.IsFieldTaken);
+                    Assert.IsNull(search.Winner);
+                }
+            }
+        }
+
+        /// <summary>
+        /// Not a failure of the call (the strips are built) but the one status a caller can ask to have thrown:
+        /// <see cref="Strips.EnsureAcceptable"/> throws the typed exception with the verdict and the native message.
+        /// </summary>
+        [Test]
+        public void NoAcceptableFamily()
+        {
+            var c = new Cylinder(12, 8, 3);
+            using (var mesh = LamellaMesh.FromArrays(c.Xyz, c.Triangles))
+            using (var field = new FieldSolver(mesh, c.InitialField, FieldParams.Default(Family.PseudoGeodesic, 60)))
+            using (var curves = LevelCurves.Uniform(field, 3, 1.0))
+            {
+                // A plane angle error of a millionth of a degree is beyond any strip on a triangle mesh.
+                StripParams strict = StripParams.Default(60, 0.5);
+                strict.ToleranceDegrees = 1e-6;
+                using (var strips = Strips.Build(curves, strict))
+                {
+                    Assert.Greater(strips.Count, 0, "built all the same");
+                    var e = Assert.Throws<NoAcceptableFamilyException>(strips.EnsureAcceptable);
+                    Assert.AreEqual(Status.NoAcceptableFamily, e.Status);
+                    StringAssert.StartsWith("no acceptable family: ", e.NativeMessage);
+                    StringAssert.Contains("by more than 0.000001°", e.NativeMessage);
+                    StringAssert.Contains(Library.StatusName(Status.NoAcceptableFamily), e.Message);
+                    Assert.IsFalse(e.Verdict.IsAcceptable);
+                    Assert.AreEqual(1e-6, e.Verdict.ToleranceDegrees);
+                    Assert.Greater(e.Verdict.StripsMissingTheta, 0);
+                }
+                // Out of (0, 180) the tolerance is refused.
+                strict.ToleranceDegrees = 0;
+                Expect(Status.InvalidArgument, () => Strips.Build(curves, strict), "tolerance_degrees");
             }
         }
 
@@ -159,10 +214,10 @@ namespace Lamella.Tests
         [Test]
         public void EveryFailureStatusIsCovered()
         {
-            // Each negative status has a test method of its name above.
+            // Each negative status, and NoAcceptableFamily (the success EnsureAcceptable throws on), has a test method of its name above.
             foreach (Status status in Enum.GetValues(typeof(Status)))
             {
-                if ((int)status >= 0) continue;
+                if ((int)status >= 0 && status != Status.NoAcceptableFamily) continue;
                 Assert.IsNotNull(typeof(ErrorTests).GetMethod(status.ToString()), "no test for " + status);
             }
         }
@@ -174,12 +229,20 @@ namespace Lamella.Tests
             Assert.Throws<ArgumentOutOfRangeException>(() => LamellaMesh.FromArrays(Square, new[] { 0, -1, 2 }));
             Assert.Throws<ArgumentNullException>(() => FieldSolver.Load(null));
             Assert.Throws<ArgumentNullException>(() => GuideCurves.Trace(null, new EdgePoint[0], 60, 90));
+            Assert.Throws<ArgumentNullException>(() => new StartSearch(null, FieldParams.Default(Family.PseudoGeodesic, 60)));
+            Assert.Throws<ArgumentNullException>(() => Utf8.FromTerminated(null));
             using (var square = LamellaMesh.FromArrays(Square, SquareTriangles))
             {
                 double theta;
                 Assert.Throws<ArgumentOutOfRangeException>(() => BoundaryStarts.EvenlySpaced(square, 0, 30, 0, -1));
                 Assert.Throws<ArgumentOutOfRangeException>(() => InitialField.FromStrokes(square, new double[6], new[] { 0, -2 }, out theta));
                 Assert.Throws<ArgumentException>(() => InitialField.FromStrokes(square, new double[5], new[] { 0, 1 }, out theta));
+                using (var search = new StartSearch(square, FieldParams.Default(Family.PseudoGeodesic, 60)))
+                {
+                    Assert.Throws<ArgumentOutOfRangeException>(() => search.Candidate(-1));
+                    // Past the candidates probed so far: the library names the index.
+                    Expect(Status.InvalidArgument, () => search.Candidate(0), "out of range");
+                }
             }
         }
     }

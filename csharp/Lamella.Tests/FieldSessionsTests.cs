@@ -182,6 +182,101 @@ namespace Lamella.Tests
             }
         }
 
+        /// <summary>
+        /// Without a start field the host runs the library's start search: live, one candidate per budget slice (the
+        /// slice stops there), no field and nothing to save meanwhile; the slice of the last candidate takes the best
+        /// one's field, which later slices step to convergence without counting the search's iterations.
+        /// </summary>
+        [Test]
+        public void SearchingSessionProbesOneCandidatePerSliceThenSteps()
+        {
+            long before = Library.DebugLiveHandles;
+            FieldParams parameters = FieldParams.Default(Family.PseudoGeodesic, 60);
+            using (var sessions = new FieldSessions())
+            {
+                Func<LamellaMesh, FieldSession> search = mesh => FieldSession.Search(mesh, parameters, SignatureOf(second, 60));
+                int slices = 0;
+                FieldSession session = null;
+                while (slices < 100)
+                {
+                    sessions.BeginSolution();
+                    session = sessions.Session(0, second.Xyz, second.Triangles, SignatureOf(second, 60), false, search);
+                    bool searching = session.IsSearching;
+                    int probed = session.Candidates.Length;
+                    SteppingOutcome outcome = session.StepWithin(80, 1000, () => false, FieldSteppingTests.TickingClock(1));
+                    sessions.EndSolution();
+                    slices++;
+                    if (!searching) break;
+                    Assert.AreEqual(SteppingStop.TimeBudget, outcome.Stop, "a slice of the search ends the solution's budget");
+                    Assert.AreEqual(0, outcome.Iterations, "no field iteration while searching");
+                    Assert.AreEqual(probed + 1, session.Candidates.Length, "one candidate per slice");
+                    if (session.IsSearching)
+                    {
+                        Assert.IsNull(session.Solver);
+                        Assert.IsNull(session.ChosenStart);
+                        Assert.AreEqual(1, sessions.RunningCount(), "a searching session is running");
+                        Assert.Throws<InvalidOperationException>(() => session.Values());
+                        Assert.AreEqual(0, FieldArchive.Read(sessions.Save()).Count, "nothing to store while searching");
+                        StringAssert.StartsWith("searching a start · " + session.Candidates.Length + " candidate", StartDescriptions.Progress(session.Candidates));
+                    }
+                }
+                Candidate[] candidates = session.Candidates;
+                Console.WriteLine("  start search in {0} live slices: {1}", slices - 1, StartDescriptions.Chosen(session.ChosenStart.Value, candidates.Length));
+                Assert.AreEqual(candidates.Length + 1, slices, "one slice per candidate, then the field");
+                Assert.IsNotNull(session.Solver);
+                Candidate chosen = session.ChosenStart.Value;
+                Assert.AreEqual(candidates.Where(c => c.IsScored).Min(c => c.Score), chosen.Score, "the best candidate");
+                StringAssert.StartsWith("start: " + (chosen.IsNegated ? "minus " : "") + "height", StartDescriptions.Short(chosen));
+                string report = StartDescriptions.Report(candidates, chosen.Index, session.Report);
+                StringAssert.StartsWith(session.Report.Describe() + "\n\nstart search:\n", report);
+                string[] lines = report.Substring(report.IndexOf("start search:", StringComparison.Ordinal)).Split('\n');
+                Assert.AreEqual(candidates.Length + 1, lines.Length, "one line per candidate");
+                CollectionAssert.AreEqual(new[] { "* " + chosen }, lines.Where(line => line.StartsWith("* ")).ToArray(), "the chosen one marked");
+                Assert.AreEqual(before + 1, Library.DebugLiveHandles, "the search was released, its field kept");
+
+                // Then the field converges live; its iterations start with the field.
+                SteppingOutcome last = default(SteppingOutcome);
+                for (int i = 0; i < 400 && last.Stop != SteppingStop.Converged; i++)
+                {
+                    last = session.StepWithin(80, 1000, () => false, FieldSteppingTests.TickingClock(10));
+                }
+                Assert.AreEqual(SteppingStop.Converged, last.Stop);
+                Assert.Less(last.Report.Iterations, 1000UL);
+                Assert.AreEqual(1, FieldArchive.Read(sessions.Save()).Count, "a field to store now");
+            }
+            Assert.AreEqual(before, Library.DebugLiveHandles);
+        }
+
+        /// <summary>The one-shot solve runs the whole search and then the field; Escape during the search stops it with nothing taken.</summary>
+        [Test]
+        public void OneShotSolveRunsTheWholeSearchThenTheField()
+        {
+            FieldParams parameters = FieldParams.Default(Family.PseudoGeodesic, 60);
+            using (var mesh = LamellaMesh.FromArrays(second.Xyz, second.Triangles))
+            {
+                using (FieldSession session = FieldSession.Search(mesh, parameters, "s"))
+                {
+                    SteppingOutcome outcome = session.ToConvergence(1000, () => false);
+                    Assert.AreEqual(SteppingStop.Converged, outcome.Stop);
+                    Assert.IsFalse(session.IsSearching);
+                    Assert.IsTrue(session.ChosenStart.HasValue);
+                    Assert.Greater(session.Candidates.Length, 1);
+                    // The family: frames against the cylinder's analytic normal (16 x 10 cells, h / R ≈ 9.4°: 3°).
+                    Cylinder.Frames frames = Cylinder.FrameErrors(session.Solver, second.Xyz, 60);
+                    Assert.AreEqual(15 * 9, frames.Framed);
+                    Assert.Less(frames.WorstAngle, 3.0);
+                }
+                using (FieldSession session = FieldSession.Search(mesh, parameters, "s"))
+                {
+                    int asked = 0;
+                    SteppingOutcome outcome = session.ToConvergence(1000, () => ++asked > 2);
+                    Assert.AreEqual(SteppingStop.Cancelled, outcome.Stop);
+                    Assert.IsTrue(session.IsSearching);
+                    Assert.AreEqual(2, session.Candidates.Length, "two candidates, then Escape");
+                }
+            }
+        }
+
         [Test]
         public void ArchiveRoundTripsAndRejectsDamage()
         {

@@ -32,6 +32,8 @@ namespace Lamella.Tests
             { "LmlEdgePoint", typeof(EdgePoint) },
             { "LmlTraceOptions", typeof(TraceOptions) },
             { "LmlCrossing", typeof(Crossing) },
+            { "LmlCandidate", typeof(CandidateRecord) },
+            { "LmlVerdict", typeof(VerdictRecord) },
         };
 
         /// <summary>Integer typedefs of the header and the managed enum each is carried by (also in arrays).</summary>
@@ -207,6 +209,7 @@ namespace Lamella.Tests
             warnings["None"] = 0;
             AssertEnumMatches(typeof(StripWarnings), warnings);
             AssertEnumMatches(typeof(TraceStop), Header.ConstantsPascal("LML_TRACE_STOP_"));
+            AssertEnumMatches(typeof(StartKind), Header.ConstantsPascal("LML_START_"));
             Assert.AreEqual(Header.FloatConstants()["LML_DEFAULT_CORNER_TURN_DEGREES"], BoundaryStarts.DefaultCornerTurnDegrees);
             Assert.AreEqual(Header.Constants()["LML_ABI_VERSION"], (long)Library.BindingAbiVersion);
         }

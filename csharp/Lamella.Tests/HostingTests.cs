@@ -129,11 +129,18 @@ namespace Lamella.Tests
             try
             {
                 Thread.CurrentThread.CurrentCulture = new CultureInfo("de-DE");
-                var metrics = new[] { new StripMetrics { Curve = 3, Length = 12.5, MaxDiffThetaDegrees = 0.25, EStraight = 1.5e-4, MaxPlanar = 2e-9, ApproPercent = 0.125 } };
+                var metrics = new[] { new StripMetrics { Curve = 3, Length = 12.5, MaxDiffThetaDegrees = 0.25, EStraight = 1.5e-4, MaxPlanar = 2e-9, ApproPercent = 0.125, MaxQuadAngleErrorDegrees = 1.5 } };
                 string line = StripLabels.Describe(metrics)[0];
                 StringAssert.StartsWith("S0 (curve 3): length 12.5, diff_θ 0.25°", line);
                 StringAssert.Contains("Appro 0.125%", line);
+                StringAssert.Contains("plane angle error 1.5°", line);
                 StringAssert.DoesNotContain(",5", line);
+                // The start search's words: directions and angles with points.
+                var height = new Candidate(2, new Interop.CandidateRecord { Kind = 0, Negated = 1, Direction = new[] { 0.5, 0.25, 0.75 }, Scored = 1, Score = 1.5 }, "minus height along (0.500, 0.250, 0.750): score 1.50");
+                Assert.AreEqual("start: minus height (0.5, 0.25, 0.75)", StartDescriptions.Short(height));
+                StringAssert.EndsWith("(candidate 2, the best of 8)", StartDescriptions.Chosen(height, 8));
+                var guides = new Candidate(9, new Interop.CandidateRecord { Kind = 1, Side = 2, StartAngleDegrees = 62.5, Rejected = 1 }, "guides from boundary side 2 at 62.5°: rejected: …");
+                Assert.AreEqual("start: guides, side 2, 62.5°", StartDescriptions.Short(guides));
             }
             finally
             {

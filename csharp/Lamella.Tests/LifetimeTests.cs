@@ -27,8 +27,9 @@ namespace Lamella.Tests
             var curves = LevelCurves.Uniform(field, 2, 1.0);
             var strips = Strips.Build(curves, StripParams.Default(60, 0.5));
             var guides = GuideCurves.Trace(mesh, new[] { BoundaryStarts.Nearest(mesh, 11, 0, 7) }, 60, 90);
-            Assert.AreEqual(before + 5, Library.DebugLiveHandles);
-            foreach (IDisposable d in new IDisposable[] { guides, strips, curves, field, mesh })
+            var search = new StartSearch(mesh, FieldParams.Default(Family.PseudoGeodesic, 60));
+            Assert.AreEqual(before + 6, Library.DebugLiveHandles);
+            foreach (IDisposable d in new IDisposable[] { search, guides, strips, curves, field, mesh })
             {
                 d.Dispose();
                 d.Dispose();
@@ -39,6 +40,7 @@ namespace Lamella.Tests
             Assert.Throws<ObjectDisposedException>(() => curves.Points());
             Assert.Throws<ObjectDisposedException>(() => { var n = strips.Count; });
             Assert.Throws<ObjectDisposedException>(() => guides.Points());
+            Assert.Throws<ObjectDisposedException>(() => search.Step());
         }
 
         [Test]
@@ -58,11 +60,16 @@ namespace Lamella.Tests
                 var curves = LevelCurves.Uniform(field, 2, 1.0);
                 Strips.Build(curves, StripParams.Default(60, 0.5));
                 FieldSolver.Load(field.Save());
+                // A search, and a field taken from another one: both live on their own.
+                new StartSearch(mesh, FieldParams.Default(Family.PseudoGeodesic, 60));
+                var probed = new StartSearch(mesh, FieldParams.Default(Family.PseudoGeodesic, 60));
+                while (probed.Step()) { }
+                probed.TakeField();
                 whileAlive = Library.DebugLiveHandles;
             });
             worker.Start();
             worker.Join();
-            Assert.AreEqual(5L, whileAlive);
+            Assert.AreEqual(8L, whileAlive);
             Collect();
             Assert.AreEqual(0L, Library.DebugLiveHandles);
         }

@@ -16,7 +16,7 @@ namespace Lamella
         /// <summary>Held around every native call that reads or changes this session.</summary>
         private readonly object gate = new object();
 
-        private FieldSolver(FieldHandle handle)
+        internal FieldSolver(FieldHandle handle)
         {
             Handle = handle;
         }

@@ -6,15 +6,16 @@ namespace Lamella
 {
     /// <summary>
     /// A failed native call: its <see cref="Status"/> and the library's message, which names the offending element.
-    /// Serialisable with both (e.g. across application domains or into a log).
+    /// Serialisable with both (e.g. across application domains or into a log). The one subclass,
+    /// <see cref="NoAcceptableFamilyException"/>, reports strips that miss θ.
     /// </summary>
     [Serializable]
-    public sealed class LamellaException : Exception
+    public class LamellaException : Exception
     {
         private const string StatusKey = "Lamella.Status";
         private const string NativeMessageKey = "Lamella.NativeMessage";
 
-        /// <summary>The failure status returned by the native library (always negative).</summary>
+        /// <summary>The failure status returned by the native library (negative; <see cref="Status.NoAcceptableFamily"/> for <see cref="NoAcceptableFamilyException"/>).</summary>
         public Status Status { get; }
 
         /// <summary>The native message (<c>lml_last_error_message</c>) as returned by the library.</summary>
@@ -29,7 +30,7 @@ namespace Lamella
         }
 
         /// <summary>Restores a serialised exception with its status and native message.</summary>
-        private LamellaException(SerializationInfo info, StreamingContext context)
+        protected LamellaException(SerializationInfo info, StreamingContext context)
             : base(info, context)
         {
             Status = (Status)info.GetInt32(StatusKey);

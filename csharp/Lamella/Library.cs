@@ -28,7 +28,7 @@ namespace Lamella
             }
         }
 
-        /// <summary>Handles (meshes, fields, curves, strips, guides) alive in the native library: for tests that check every handle is released.</summary>
+        /// <summary>Handles (meshes, fields, searches, curves, strips, guides) alive in the native library: for tests that check every handle is released.</summary>
         public static long DebugLiveHandles => (long)NativeMethods.lml_debug_live_handles().ToUInt64();
 
         /// <summary>Makes the native library panic on purpose; the panic surfaces as a <see cref="LamellaException"/> with <see cref="Status.InternalError"/>.</summary>

@@ -1,6 +1,6 @@
 namespace Lamella
 {
-    /// <summary>The result of a native call (<c>LmlStatus</c> in lamella.h): 0 and above is success, negative a failure.</summary>
+    /// <summary>The result of a native call (<c>LmlStatus</c> in lamella.h): 0 and above is success (outputs valid), negative a failure.</summary>
     public enum Status
     {
         /// <summary>Success.</summary>
@@ -9,6 +9,12 @@ namespace Lamella
         More = 1,
         /// <summary>The field optimisation has converged.</summary>
         Converged = 2,
+        /// <summary>
+        /// Strips were built (a success: the strips are valid) but some miss θ by more than the tolerance, or have flipped
+        /// quads: no acceptable family. <see cref="Strips.Verdict"/> says where; <see cref="Strips.EnsureAcceptable"/>
+        /// turns it into a <see cref="NoAcceptableFamilyException"/>.
+        /// </summary>
+        NoAcceptableFamily = 3,
         /// <summary>A NULL pointer, a wrong array length, a non-finite or out-of-range parameter, an unreadable file.</summary>
         InvalidArgument = -1,
         /// <summary>The triangles or coordinates do not form a valid mesh.</summary>

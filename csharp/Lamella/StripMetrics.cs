@@ -51,6 +51,13 @@ namespace Lamella
         public ulong FlippedQuads;
         /// <summary>Warning bits.</summary>
         public StripWarnings Warnings;
+        /// <summary>
+        /// Max over the quads of the error of the strip plane's angle against the smooth surface normal (the quad normal
+        /// should make 90° − θ with it), degrees: what the <see cref="Verdict"/> judges.
+        /// </summary>
+        public double MaxQuadAngleErrorDegrees;
+        /// <summary>The longest ruling segment from the centre line to a boundary, over the strip width (≥ 0.5).</summary>
+        public double MaxRulingOverWidth;
     }
 
     /// <summary>Table 4 over a whole pattern (<c>LmlPatternMetrics</c>).</summary>
@@ -73,6 +80,10 @@ namespace Lamella
         public double ApproPercent;
         /// <summary>Flipped quads over the strips.</summary>
         public ulong FlippedQuads;
+        /// <summary>Max <see cref="StripMetrics.MaxQuadAngleErrorDegrees"/> over the strips, degrees.</summary>
+        public double MaxQuadAngleErrorDegrees;
+        /// <summary>Max <see cref="StripMetrics.MaxRulingOverWidth"/> over the strips.</summary>
+        public double MaxRulingOverWidth;
     }
 
     /// <summary>A level curve no strip could be built on, and why (<c>LmlSkippedCurve</c>).</summary>

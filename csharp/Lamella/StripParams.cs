@@ -39,6 +39,11 @@ namespace Lamella
         public double ThetaDegrees;
         /// <summary>Width of the flat strip, > 0, in the mesh's unit.</summary>
         public double Width;
+        /// <summary>
+        /// The largest angle error in degrees, in (0, 180), of a quad of an acceptable pattern (default 2): beyond it, or
+        /// with flipped quads, the strips are built but their <see cref="Strips.Verdict"/> is not acceptable.
+        /// </summary>
+        public double ToleranceDegrees;
         /// <summary>The strip energy weights.</summary>
         public StripWeights Weights;
 

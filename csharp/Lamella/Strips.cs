@@ -5,25 +5,52 @@ namespace Lamella
 {
     /// <summary>
     /// Rectifying developable strips along level curves (<c>LmlStrips</c>): planar quads, centre lines, rulings,
-    /// flat unrollings and the Table 4 metrics. Strip i with n centre points has 2n vertices (left boundary, then
+    /// flat unrollings, the Table 4 metrics and the verdict on θ. Strip i with n centre points has 2n vertices (left boundary, then
     /// right) and n − 1 quads; three offset tables cut the flat arrays per strip. Immutable.
     /// </summary>
     public sealed class Strips : IDisposable
     {
         internal readonly StripsHandle Handle;
+        /// <summary>The library's message when the strips were built without an acceptable family, else empty.</summary>
+        private readonly string verdictMessage;
 
-        private Strips(StripsHandle handle)
+        private Strips(StripsHandle handle, string verdictMessage)
         {
             Handle = handle;
+            this.verdictMessage = verdictMessage;
         }
 
-        /// <summary>Builds a rectifying strip on every polyline of <paramref name="curves"/>; polylines that cannot carry one are listed by <see cref="Skipped"/>.</summary>
+        /// <summary>
+        /// Builds a rectifying strip on every polyline of <paramref name="curves"/>; polylines that cannot carry one are
+        /// listed by <see cref="Skipped"/>. Strips that miss θ by more than <see cref="StripParams.ToleranceDegrees"/> (or
+        /// have flipped quads) are built all the same: <see cref="Verdict"/> says so, <see cref="EnsureAcceptable"/> throws.
+        /// </summary>
         public static Strips Build(LevelCurves curves, StripParams parameters)
         {
             if (curves == null) throw new ArgumentNullException(nameof(curves));
             StripsHandle handle;
-            Native.Check(NativeMethods.lml_strips_new(curves.Handle, ref parameters, out handle));
-            return new Strips(handle);
+            Status status = Native.Check(NativeMethods.lml_strips_new(curves.Handle, ref parameters, out handle));
+            // Read at once: the message belongs to the last call on this thread.
+            string message = status == Status.NoAcceptableFamily ? Utf8.FromNative(NativeMethods.lml_last_error_message()) : string.Empty;
+            return new Strips(handle, message);
+        }
+
+        /// <summary>The verdict: whether every strip meets θ within the tolerance, without flipped quads, and where it misses most.</summary>
+        public Verdict Verdict
+        {
+            get
+            {
+                VerdictRecord record;
+                Native.Check(NativeMethods.lml_strips_verdict(Handle, out record));
+                return new Verdict(record, record.Acceptable != 0 ? string.Empty : verdictMessage);
+            }
+        }
+
+        /// <summary>Throws <see cref="NoAcceptableFamilyException"/> (with the <see cref="Verdict"/>) unless the strips meet θ within the tolerance, without flipped quads.</summary>
+        public void EnsureAcceptable()
+        {
+            Verdict verdict = Verdict;
+            if (!verdict.IsAcceptable) throw new NoAcceptableFamilyException(verdict);
         }
 
         /// <summary>The number of strips.</summary>

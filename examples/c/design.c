@@ -1,12 +1,15 @@
 /* Designs a theta = 60 degree strip pattern through Lamella's C ABI, step by step.
  *
  * Usage: design OUT_DIR [MESH.obj]
- * Reads the mesh from MESH.obj or generates a parabolic vault, starts from the coordinate along
- * the mesh's longest extent, steps the field optimisation until it converges while printing
- * progress, extracts level curves and builds rectifying strips on them, and writes
- * OUT_DIR/mesh.obj, OUT_DIR/field.csv (x,y,z,field per vertex), OUT_DIR/binormals.csv
- * (x,y,z,bx,by,bz per vertex; zero at boundary vertices), OUT_DIR/curves.obj (the level
- * polylines as `l` lines) and OUT_DIR/strips.obj (the strips' planar quads, one group each). */
+ * Reads the mesh from MESH.obj or generates a parabolic vault, lets the library's start search
+ * choose the initial field (printing every candidate it probed), steps the field optimisation
+ * until it converges while printing progress, extracts level curves and builds rectifying strips
+ * on them, prints the verdict (whether the strips meet theta), and writes OUT_DIR/mesh.obj,
+ * OUT_DIR/field.csv (x,y,z,field per vertex), OUT_DIR/binormals.csv (x,y,z,bx,by,bz per vertex;
+ * zero at boundary vertices), OUT_DIR/curves.obj (the level polylines as `l` lines) and
+ * OUT_DIR/strips.obj (the strips' planar quads, one group each). Strips that miss theta
+ * (LML_STATUS_NO_ACCEPTABLE_FAMILY) are written all the same: the exit status is non-zero only
+ * when a call fails. */
 #include "lamella.h"
 #include "vault.h"
 
@@ -66,31 +69,44 @@ static LmlMesh *load_mesh(const char *path)
     return mesh;
 }
 
-/* The coordinate along the longest side of the bounding box, per vertex. */
-static double *initial_field(const double *xyz, size_t n)
+/* Prints candidate `i` of a search (its text through the two-call pattern), `*` marking the winner. */
+static void print_candidate(const LmlSearch *search, size_t i, size_t winner)
 {
-    double lo[3], hi[3];
-    double *field = malloc(n * sizeof(double) + 1); /* + 1: never malloc(0) */
-    size_t v;
-    int k, axis = 0;
-    if (field == NULL) {
+    size_t needed = 0;
+    char *text;
+    if (lml_search_candidate_text(search, i, NULL, 0, &needed) != LML_STATUS_BUFFER_TOO_SMALL) {
+        return;
+    }
+    text = malloc(needed);
+    if (text != NULL && ok(lml_search_candidate_text(search, i, (uint8_t *)text, needed, &needed), "lml_search_candidate_text")) {
+        printf("%c candidate %lu: %s\n", i == winner ? '*' : ' ', (unsigned long)i, text);
+    }
+    free(text);
+}
+
+/* The library's start search for `params` on `mesh`: steps it until every candidate is probed,
+ * prints them, and returns the field that continues from the best one (or NULL). */
+static LmlField *search_start(const LmlMesh *mesh, const LmlFieldParams *params)
+{
+    LmlSearch *search = NULL;
+    LmlField *field = NULL;
+    LmlStatus status = LML_STATUS_MORE;
+    size_t count = 0, winner = 0, i;
+    if (!ok(lml_search_new(mesh, params, &search), "lml_search_new")) {
         return NULL;
     }
-    for (k = 0; k < 3; k++) {
-        lo[k] = hi[k] = xyz[k];
+    while (status == LML_STATUS_MORE) {
+        status = lml_search_step(search);
     }
-    for (v = 0; v < n; v++) {
-        for (k = 0; k < 3; k++) {
-            lo[k] = xyz[3 * v + k] < lo[k] ? xyz[3 * v + k] : lo[k];
-            hi[k] = xyz[3 * v + k] > hi[k] ? xyz[3 * v + k] : hi[k];
+    if (ok(status, "lml_search_step") && ok(lml_search_candidate_count(search, &count), "lml_search_candidate_count") &&
+        ok(lml_search_winner(search, &winner), "lml_search_winner")) {
+        printf("start search: %lu candidates\n", (unsigned long)count);
+        for (i = 0; i < count; i++) {
+            print_candidate(search, i, winner);
         }
+        ok(lml_search_field(search, &field), "lml_search_field");
     }
-    for (k = 1; k < 3; k++) {
-        axis = hi[k] - lo[k] > hi[axis] - lo[axis] ? k : axis;
-    }
-    for (v = 0; v < n; v++) {
-        field[v] = xyz[3 * v + axis];
-    }
+    lml_search_free(search);
     return field;
 }
 
@@ -272,15 +288,36 @@ static int write_strips(const char *dir, const LmlStrips *strips)
     return written;
 }
 
+/* Prints the verdict on the strips: the library's message when they miss theta (status
+ * LML_STATUS_NO_ACCEPTABLE_FAMILY), else the worst quad within the tolerance. */
+static int print_verdict(LmlStatus built, const LmlStrips *strips)
+{
+    LmlVerdict verdict;
+    if (built == LML_STATUS_NO_ACCEPTABLE_FAMILY) {
+        /* Read before any other call: the message belongs to the last call. */
+        printf("verdict: %s\n", lml_last_error_message());
+    }
+    if (!ok(lml_strips_verdict(strips, &verdict), "lml_strips_verdict")) {
+        return 0;
+    }
+    if (verdict.acceptable) {
+        printf("verdict: acceptable, every strip within %.1f deg of theta (worst: strip %lu quad %lu, %.3f deg off)\n",
+               verdict.tolerance_degrees, (unsigned long)verdict.worst_strip, (unsigned long)verdict.worst_quad,
+               verdict.worst_error_degrees);
+    }
+    return 1;
+}
+
 /* Level curves of the converged field, strips on them, both written as OBJ. */
 static int design_strips(const char *dir, const LmlField *field)
 {
     LmlCurves *curves = NULL;
     LmlStrips *strips = NULL;
     LmlStripParams params;
+    LmlStatus built = LML_STATUS_INVALID_ARGUMENT;
     int success = ok(lml_curves_new_uniform(field, CURVES, SPACING, &curves), "lml_curves_new_uniform") &&
                   ok(lml_strip_params_default(THETA, WIDTH, &params), "lml_strip_params_default") &&
-                  ok(lml_strips_new(curves, &params, &strips), "lml_strips_new") &&
+                  ok(built = lml_strips_new(curves, &params, &strips), "lml_strips_new") && print_verdict(built, strips) &&
                   write_curves(dir, curves) && write_strips(dir, strips);
     if (success) {
         printf("wrote %s/curves.obj, %s/strips.obj\n", dir, dir);
@@ -297,7 +334,7 @@ int main(int argc, char **argv)
     LmlFieldParams params;
     LmlReport report;
     LmlStatus status = LML_STATUS_MORE;
-    double *xyz = NULL, *start = NULL, *values = NULL, *binormals = NULL;
+    double *xyz = NULL, *values = NULL, *binormals = NULL;
     size_t n = 0;
     int success = 0;
 
@@ -311,14 +348,12 @@ int main(int argc, char **argv)
         lml_mesh_free(mesh);
         return 1;
     }
+    printf("%lu vertices, theta = %.0f degrees\n", (unsigned long)n, THETA);
     xyz = malloc(3 * n * sizeof(double));
-    if (xyz != NULL && ok(lml_mesh_positions(mesh, xyz, 3 * n, &n), "lml_mesh_positions")) {
+    if (xyz != NULL && ok(lml_mesh_positions(mesh, xyz, 3 * n, &n), "lml_mesh_positions") &&
+        ok(lml_field_params_default(LML_FAMILY_PSEUDO_GEODESIC, THETA, &params), "params") &&
+        (field = search_start(mesh, &params)) != NULL) {
         n /= 3;
-        start = initial_field(xyz, n);
-    }
-    if (start != NULL && ok(lml_field_params_default(LML_FAMILY_PSEUDO_GEODESIC, THETA, &params), "params") &&
-        ok(lml_field_new(mesh, start, n, &params, &field), "lml_field_new")) {
-        printf("%lu vertices, theta = %.0f degrees\n", (unsigned long)n, THETA);
         do {
             status = lml_field_step(field, STEP, &report);
             if (!ok(status, "lml_field_step")) {
@@ -337,7 +372,6 @@ int main(int argc, char **argv)
     }
     free(values);
     free(binormals);
-    free(start);
     free(xyz);
     lml_field_free(field);
     lml_mesh_free(mesh);

@@ -2,17 +2,16 @@
 // theta = 60 degree strip pattern step by step.
 //
 // Usage: design_cpp OUT_DIR [MESH.obj]
-// Reads MESH.obj or generates a parabolic vault, starts from the coordinate along the mesh's
-// longest extent, steps until convergence printing progress, stores the session and restores
-// it (as a CAD document would), writes OUT_DIR/field.csv and OUT_DIR/binormals.csv, then
-// extracts level curves, builds rectifying strips on them and writes OUT_DIR/curves.obj
-// (polylines as `l` lines) and OUT_DIR/strips.obj (planar quads, one group per strip), with
-// the same layout and numbers as the C example's files.
+// Reads MESH.obj or generates a parabolic vault, lets the library's start search choose the
+// initial field, steps until convergence printing progress, stores the session and restores it
+// (as a CAD document would), writes OUT_DIR/field.csv and OUT_DIR/binormals.csv, then extracts
+// level curves, builds rectifying strips on them, prints the verdict and writes
+// OUT_DIR/curves.obj (polylines as `l` lines) and OUT_DIR/strips.obj (planar quads, one group
+// per strip), with the same layout and numbers as the C example's files. Strips that miss theta
+// are written all the same; the exit status is non-zero only on a failure.
 #include "lamella.hpp"
 #include "vault.h"
 
-#include <algorithm>
-#include <array>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
@@ -37,24 +36,31 @@ lamella::Mesh load_mesh(int argc, char **argv) {
     return lamella::Mesh::from_arrays(xyz, triangles);
 }
 
-// The coordinate along the longest side of the bounding box, per vertex.
-std::vector<double> initial_field(const std::vector<double> &xyz) {
-    std::size_t n = xyz.size() / 3;
-    std::array<double, 3> extent{};
-    for (int k = 0; k < 3; ++k) {
-        double lo = xyz[k], hi = xyz[k];
-        for (std::size_t v = 0; v < n; ++v) {
-            lo = std::min(lo, xyz[3 * v + k]);
-            hi = std::max(hi, xyz[3 * v + k]);
-        }
-        extent[k] = hi - lo;
+// The library's start search: every candidate probed and printed (`*` the winner), then the
+// field that continues from the best one.
+lamella::Field search_start(const lamella::Mesh &mesh, double theta_degrees) {
+    lamella::Search search(mesh, lamella::Field::pseudo_geodesic(theta_degrees));
+    while (search.step()) {
     }
-    int axis = static_cast<int>(std::max_element(extent.begin(), extent.end()) - extent.begin());
-    std::vector<double> field(n);
-    for (std::size_t v = 0; v < n; ++v) {
-        field[v] = xyz[3 * v + axis];
+    std::size_t count = search.candidate_count(), winner = search.winner();
+    std::printf("start search: %lu candidates\n", static_cast<unsigned long>(count));
+    for (std::size_t i = 0; i < count; ++i) {
+        std::printf("%c candidate %lu: %s\n", i == winner ? '*' : ' ', static_cast<unsigned long>(i),
+                    search.candidate_text(i).c_str());
     }
-    return field;
+    return search.take_field();
+}
+
+// The verdict on the strips: the library's message when they miss theta, else the worst quad.
+void print_verdict(const lamella::Strips &strips) {
+    LmlVerdict verdict = strips.verdict();
+    if (verdict.acceptable) {
+        std::printf("verdict: acceptable, every strip within %.1f deg of theta (worst: strip %lu quad %lu, %.3f deg off)\n",
+                    verdict.tolerance_degrees, static_cast<unsigned long>(verdict.worst_strip),
+                    static_cast<unsigned long>(verdict.worst_quad), verdict.worst_error_degrees);
+    } else {
+        std::printf("verdict: %s\n", strips.verdict_message().c_str());
+    }
 }
 
 void write_csv(const std::string &path, const char *header, const std::vector<double> &xyz,
@@ -132,8 +138,8 @@ int main(int argc, char **argv) {
         std::cout << "lamella " << lml_version() << " (ABI " << lml_abi_version() << ")\n";
         lamella::Mesh mesh = load_mesh(argc, argv);
         std::vector<double> xyz = mesh.positions();
-        lamella::Field field(mesh, initial_field(xyz), lamella::Field::pseudo_geodesic(60.0));
         std::cout << xyz.size() / 3 << " vertices, theta = 60 degrees\n";
+        lamella::Field field = search_start(mesh, 60.0);
         LmlReport report{};
         bool converged = false;
         while (!converged && report.iterations < 300) {
@@ -159,6 +165,7 @@ int main(int argc, char **argv) {
         // Six level curves resampled at 0.5, strips 0.4 wide (as the C example).
         lamella::Curves curves = lamella::Curves::uniform(reopened, 6, 0.5);
         lamella::Strips strips(curves, lamella::Strips::params(60.0, 0.4));
+        print_verdict(strips);
         LmlPatternMetrics pattern = strips.pattern_metrics();
         std::printf("%lu strips, %lu curves skipped; max diff_theta %.3f deg, max e_straight %.1e\n",
                     static_cast<unsigned long>(pattern.strip_count), static_cast<unsigned long>(pattern.skipped_count),

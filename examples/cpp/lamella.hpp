@@ -26,7 +26,7 @@ private:
     LmlStatus status_;
 };
 
-// Passes successes (OK, MORE, CONVERGED) through and throws on failures.
+// Passes successes (OK, MORE, CONVERGED, NO_ACCEPTABLE_FAMILY) through and throws on failures.
 inline LmlStatus check(LmlStatus status, const char *call) {
     if (status < 0) {
         throw Error(status, call);
@@ -46,10 +46,14 @@ struct CurvesDeleter {
 struct StripsDeleter {
     void operator()(LmlStrips *strips) const noexcept { lml_strips_free(strips); }
 };
+struct SearchDeleter {
+    void operator()(LmlSearch *search) const noexcept { lml_search_free(search); }
+};
 using MeshHandle = std::unique_ptr<LmlMesh, MeshDeleter>;
 using FieldHandle = std::unique_ptr<LmlField, FieldDeleter>;
 using CurvesHandle = std::unique_ptr<LmlCurves, CurvesDeleter>;
 using StripsHandle = std::unique_ptr<LmlStrips, StripsDeleter>;
+using SearchHandle = std::unique_ptr<LmlSearch, SearchDeleter>;
 
 // The two-call pattern: asks for the size, then fills a vector of exactly that size.
 template <class T, class Get>
@@ -132,8 +136,53 @@ public:
     const LmlField *get() const { return handle_.get(); }
 
 private:
+    friend class Search;
     explicit Field(FieldHandle handle) : handle_(std::move(handle)) {}
     FieldHandle handle_;
+};
+
+// The library's start search: several initial fields, a short solve from each, the best one
+// continues as a Field. Step it until it returns false, then take the field.
+class Search {
+public:
+    Search(const Mesh &mesh, const LmlFieldParams &params) {
+        LmlSearch *raw = nullptr;
+        check(lml_search_new(mesh.get(), &params, &raw), "lml_search_new");
+        handle_.reset(raw);
+    }
+    // Probes the next candidate; true while candidates remain.
+    bool step() { return check(lml_search_step(handle_.get()), "lml_search_step") == LML_STATUS_MORE; }
+    std::size_t candidate_count() const {
+        std::size_t count = 0;
+        check(lml_search_candidate_count(handle_.get(), &count), "lml_search_candidate_count");
+        return count;
+    }
+    LmlCandidate candidate(std::size_t index) const {
+        LmlCandidate candidate;
+        check(lml_search_candidate(handle_.get(), index, &candidate), "lml_search_candidate");
+        return candidate;
+    }
+    // The candidate's description, e.g. "height along (1.000, 0.000, 0.000): score 1.19".
+    std::string candidate_text(std::size_t index) const {
+        std::vector<std::uint8_t> text = fetch<std::uint8_t>([&](std::uint8_t *out, std::size_t capacity, std::size_t *needed) {
+            return lml_search_candidate_text(handle_.get(), index, out, capacity, needed);
+        }, "lml_search_candidate_text");
+        return std::string(text.begin(), text.end() - 1);  // without the NUL
+    }
+    std::size_t winner() const {
+        std::size_t index = 0;
+        check(lml_search_winner(handle_.get(), &index), "lml_search_winner");
+        return index;
+    }
+    // The field of the best candidate, to be stepped to convergence; ends the search.
+    Field take_field() {
+        LmlField *raw = nullptr;
+        check(lml_search_field(handle_.get(), &raw), "lml_search_field");
+        return Field(FieldHandle(raw));
+    }
+
+private:
+    SearchHandle handle_;
 };
 
 // Level curves of a field: polylines as points (x y z ...) cut by offsets (c + 1 entries).
@@ -166,11 +215,23 @@ private:
 // and the Table 4 measures.
 class Strips {
 public:
+    // Strips that miss theta (LML_STATUS_NO_ACCEPTABLE_FAMILY) are built all the same: see verdict().
     Strips(const Curves &curves, const LmlStripParams &params) {
         LmlStrips *raw = nullptr;
-        check(lml_strips_new(curves.get(), &params, &raw), "lml_strips_new");
+        LmlStatus status = check(lml_strips_new(curves.get(), &params, &raw), "lml_strips_new");
         handle_.reset(raw);
+        if (status == LML_STATUS_NO_ACCEPTABLE_FAMILY) {
+            verdict_message_ = lml_last_error_message();
+        }
     }
+    LmlVerdict verdict() const {
+        LmlVerdict verdict;
+        check(lml_strips_verdict(handle_.get(), &verdict), "lml_strips_verdict");
+        return verdict;
+    }
+    // The library's message when the strips miss theta (names the strips, the worst point and
+    // what to try), empty when they are acceptable.
+    const std::string &verdict_message() const { return verdict_message_; }
     static LmlStripParams params(double theta_degrees, double width) {
         LmlStripParams params;
         check(lml_strip_params_default(theta_degrees, width, &params), "lml_strip_params_default");
@@ -204,6 +265,7 @@ public:
 
 private:
     StripsHandle handle_;
+    std::string verdict_message_;
 };
 
 }  // namespace lamella

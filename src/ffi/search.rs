@@ -97,7 +97,10 @@ pub unsafe extern "C" fn lml_search_new(mesh: *const LmlMesh, params: *const Lml
         let mut out = unsafe { Out::new(out, "out") }?;
         out.set(std::ptr::null_mut());
         let mesh = unsafe { handle(mesh, "mesh") }?;
-        let params = unsafe { handle(params, "params") }?.to_params()?;
+        let mut params = unsafe { handle(params, "params") }?.to_params()?;
+        // The family by θ, as lml_field_new takes it: the search's candidates (one sign for geodesics
+        // and asymptotic curves), its degenerate-family rejection and its measure depend on it.
+        params.family = params.family.by_name();
         let search = StartSearch::new(&mesh.mesh, params, SearchOptions::default())?;
         out.set_owned(LmlSearch { search: Some(search), finished: Vec::new() });
         Ok(LmlStatus::Ok)

@@ -6,9 +6,9 @@
 static int passed;
 static int failed;
 
-/* Status codes run from -10 to 2; index = code + 10. */
+/* Status codes run from -10 to 3; index = code + 10. */
 #define STATUS_MIN (-10)
-#define STATUS_MAX 2
+#define STATUS_MAX 3
 static int seen[STATUS_MAX - STATUS_MIN + 1];
 
 void check(int ok, const char *file, int line, const char *what)

@@ -22,6 +22,8 @@ int cylinder_generate(Cylinder *c, unsigned columns, unsigned rows, uint64_t see
     size_t t = 0;
     unsigned i, j;
 
+    c->columns = columns;
+    c->rows = rows;
     c->vertex_count = (size_t)(columns + 1) * (rows + 1);
     c->triangle_count = (size_t)2 * columns * rows;
     c->xyz = malloc(3 * c->vertex_count * sizeof(double));

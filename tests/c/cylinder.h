@@ -12,6 +12,8 @@
 #define CYLINDER_HEIGHT 15.0
 
 typedef struct {
+    unsigned columns;     /* grid cells around the axis */
+    unsigned rows;        /* grid cells along the axis */
     size_t vertex_count;
     size_t triangle_count;
     double *xyz;          /* 3 * vertex_count */

@@ -9,11 +9,12 @@
 int main(int argc, char **argv)
 {
     const char *scratch = argc > 1 ? argv[1] : ".";
-    Cylinder cylinder;
+    Cylinder cylinder, small;
     LmlField *field;
 
     /* 26 x 15 cells: about 1 length unit each, 432 vertices (small enough for valgrind). */
-    if (!cylinder_generate(&cylinder, 26, 15, 7)) {
+    /* The search probes a dozen starts with real solves: 16 x 10 cells, 187 vertices. */
+    if (!cylinder_generate(&cylinder, 26, 15, 7) || !cylinder_generate(&small, 16, 10, 11)) {
         printf("out of memory\n");
         return 1;
     }
@@ -22,6 +23,7 @@ int main(int argc, char **argv)
     test_field_inputs(&cylinder);
     test_threads(&cylinder);
     test_guides(&cylinder);
+    test_search(&small);
     field = test_solve(&cylinder);
     CHECK(field != NULL);
     if (field != NULL) {
@@ -31,6 +33,7 @@ int main(int argc, char **argv)
     }
     lml_field_free(field);
     cylinder_free(&cylinder);
+    cylinder_free(&small);
     /* Every handle created above (including those of the threads test) has been freed. */
     CHECK(lml_debug_live_handles() == 0);
     CHECK(every_status_seen());

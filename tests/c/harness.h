@@ -14,6 +14,10 @@ void test_field_inputs(const Cylinder *cylinder);
 /* The real solve: theta = 60 degrees step by step on the cylinder, checked against its geometry.
  * Returns the converged session (owned by the caller) or NULL. */
 LmlField *test_solve(const Cylinder *cylinder);
+/* The frames of a converged field on the cylinder against its analytic normal (radial): at every
+ * interior vertex a unit binormal at the signed angle `theta` (within `tolerance_degrees`) and a
+ * tangent side vector. */
+void check_cylinder_frames(const LmlField *field, const Cylinder *cylinder, double theta, double tolerance_degrees);
 /* Handles moved between threads, different handles used concurrently, per-thread messages. */
 void test_threads(const Cylinder *cylinder);
 /* Save / load round trip of a session and corrupted, truncated and future-version data. */
@@ -25,6 +29,10 @@ LmlCurves *test_curves(const LmlField *field, const Cylinder *cylinder);
 /* Strips on `curves` (taken over and freed): parameters, every invalid input, Table 4 metrics
  * and independent checks of planarity, unrolling and width; skipped curves. */
 void test_strips(const LmlField *field, LmlCurves *curves);
+/* The default start search on a (small) cylinder: every invalid input, stepping until done,
+ * candidates, texts and winner, the field taken once and converged; theta 60, and theta 90 and 0
+ * named geodesics (helices) and asymptotic curves (rulings). */
+void test_search(const Cylinder *cylinder);
 /* Guide curves on the cylinder: boundary starts, traced 60 degree P-curves against the mesh
  * normals, crossings and the order check, initial fields from guides (then solved) and from
  * strokes along them, and every invalid input. */

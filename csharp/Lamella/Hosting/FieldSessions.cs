@@ -81,14 +81,18 @@ namespace Lamella.Hosting
         }
 
         /// <summary>
-        /// What a document stores (see <see cref="FieldArchive"/>): every held field, or, before the first solution after
+        /// What a document stores (see <see cref="FieldArchive"/>): every held field (a session still searching its start
+        /// has none: it searches again when the document is reopened), or, before the first solution after
         /// <see cref="Load"/>, the loaded bytes unchanged; null when there is nothing.
         /// </summary>
         public byte[] Save()
         {
             if (Count == 0) return savedBytes;
             var fields = new List<SavedField>();
-            foreach (KeyValuePair<int, FieldSession> slot in slots.Stored()) fields.Add(slot.Value.Save(slot.Key));
+            foreach (KeyValuePair<int, FieldSession> slot in slots.Stored())
+            {
+                if (!slot.Value.IsSearching) fields.Add(slot.Value.Save(slot.Key));
+            }
             return FieldArchive.Write(fields);
         }
 

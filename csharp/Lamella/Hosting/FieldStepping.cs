@@ -55,10 +55,7 @@ namespace Lamella.Hosting
         public static SteppingOutcome StepWithin(FieldSolver solver, double budgetMs, long iterationCap, Func<bool> cancelRequested, Func<double> clockMs)
         {
             if (solver == null) throw new ArgumentNullException(nameof(solver));
-            if (cancelRequested == null) throw new ArgumentNullException(nameof(cancelRequested));
-            if (clockMs == null) throw new ArgumentNullException(nameof(clockMs));
-            if (!(budgetMs > 0)) throw new ArgumentOutOfRangeException(nameof(budgetMs), "the time budget must be > 0 ms");
-            if (iterationCap < 0) throw new ArgumentOutOfRangeException(nameof(iterationCap));
+            CheckArguments(budgetMs, iterationCap, cancelRequested, clockMs);
             double start = clockMs(), last = start;
             var outcome = new SteppingOutcome { Report = solver.Report };
             while (true)
@@ -93,6 +90,15 @@ namespace Lamella.Hosting
             }
             outcome.ElapsedMs = clockMs() - start;
             return outcome;
+        }
+
+        /// <summary>The argument checks of <see cref="StepWithin"/>, shared with the hosts that step a start search first.</summary>
+        internal static void CheckArguments(double budgetMs, long iterationCap, Func<bool> cancelRequested, Func<double> clockMs)
+        {
+            if (cancelRequested == null) throw new ArgumentNullException(nameof(cancelRequested));
+            if (clockMs == null) throw new ArgumentNullException(nameof(clockMs));
+            if (!(budgetMs > 0)) throw new ArgumentOutOfRangeException(nameof(budgetMs), "the time budget must be > 0 ms");
+            if (iterationCap < 0) throw new ArgumentOutOfRangeException(nameof(iterationCap));
         }
 
         /// <summary>

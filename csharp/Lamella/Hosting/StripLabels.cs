@@ -17,7 +17,7 @@ namespace Lamella.Hosting
             return labels;
         }
 
-        /// <summary>One line per strip: label, curve, length, diff_θ, e_straight, max planarity residual, Appro and warnings (paper Table 4).</summary>
+        /// <summary>One line per strip: label, curve, length, diff_θ, e_straight, max planarity residual, Appro (paper Table 4), the strip plane's angle error (what the verdict judges) and warnings.</summary>
         public static List<string> Describe(StripMetrics[] metrics)
         {
             var lines = new List<string>(metrics.Length);
@@ -25,8 +25,8 @@ namespace Lamella.Hosting
             {
                 StripMetrics m = metrics[i];
                 lines.Add(string.Format(CultureInfo.InvariantCulture,
-                    "{0} (curve {1}): length {2:0.###}, diff_θ {3:0.###}°, e_straight {4:0.##e+0}, max planar {5:0.##e+0}, Appro {6:0.####}%, warnings {7}",
-                    Label(i), m.Curve, m.Length, m.MaxDiffThetaDegrees, m.EStraight, m.MaxPlanar, m.ApproPercent, m.Warnings));
+                    "{0} (curve {1}): length {2:0.###}, diff_θ {3:0.###}°, e_straight {4:0.##e+0}, max planar {5:0.##e+0}, Appro {6:0.####}%, plane angle error {7:0.###}°, warnings {8}",
+                    Label(i), m.Curve, m.Length, m.MaxDiffThetaDegrees, m.EStraight, m.MaxPlanar, m.ApproPercent, m.MaxQuadAngleErrorDegrees, m.Warnings));
             }
             return lines;
         }

@@ -36,6 +36,12 @@ namespace Lamella.Interop
         protected override bool ReleaseHandle() { NativeMethods.lml_strips_free(handle); return true; }
     }
 
+    internal sealed class SearchHandle : LamellaHandle
+    {
+        public SearchHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_search_free(handle); return true; }
+    }
+
     internal sealed class GuidesHandle : LamellaHandle
     {
         public GuidesHandle() { }

@@ -60,6 +60,20 @@ namespace Lamella.Interop
         public static extern Status lml_field_side_vectors(FieldHandle field, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_field_singular_vertices(FieldHandle field, [Out] uint[] buffer, UIntPtr capacity, out UIntPtr needed);
+
+        // LmlSearch (declared between lml_field_singular_vertices and lml_field_save in the header).
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_search_new(MeshHandle mesh, [In] ref FieldParams parameters, out SearchHandle search);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_search_free(IntPtr search);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_search_step(SearchHandle search);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_search_candidate_count(SearchHandle search, out UIntPtr count);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_search_candidate(SearchHandle search, UIntPtr index, out CandidateRecord candidate);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_search_candidate_text(SearchHandle search, UIntPtr index, [Out] byte[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_search_winner(SearchHandle search, out UIntPtr index);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_search_field(SearchHandle search, out FieldHandle field);
+
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_field_save(FieldHandle field, [Out] byte[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)]
@@ -89,6 +103,7 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_strips_new(CurvesHandle curves, [In] ref StripParams parameters, out StripsHandle strips);
         [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_strips_free(IntPtr strips);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_strips_verdict(StripsHandle strips, out VerdictRecord verdict);
         [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_strips_count(StripsHandle strips, out UIntPtr count);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_strips_point_offsets(StripsHandle strips, [Out] UIntPtr[] buffer, UIntPtr capacity, out UIntPtr needed);

@@ -24,6 +24,14 @@ namespace Lamella.Interop
             return Encoding.UTF8.GetString(bytes);
         }
 
+        /// <summary>The text of UTF-8 bytes up to their first NUL (all of them without one), as the library's two-call text outputs write them.</summary>
+        public static string FromTerminated(byte[] bytes)
+        {
+            if (bytes == null) throw new ArgumentNullException(nameof(bytes));
+            int length = Array.IndexOf(bytes, (byte)0);
+            return Encoding.UTF8.GetString(bytes, 0, length < 0 ? bytes.Length : length);
+        }
+
         /// <summary>A NUL-terminated UTF-8 copy of <paramref name="text"/> for a <c>const char *</c> argument.</summary>
         public static byte[] ToNative(string text)
         {

@@ -147,6 +147,7 @@ namespace Grasshopper.Kernel
             public int AddNumberParameter(string name, string nickname, string description, GH_ParamAccess access, double @default) { throw new NotSupportedException("facade"); }
             public int AddIntegerParameter(string name, string nickname, string description, GH_ParamAccess access, int @default) { throw new NotSupportedException("facade"); }
             public int AddBooleanParameter(string name, string nickname, string description, GH_ParamAccess access, bool @default) { throw new NotSupportedException("facade"); }
+            public int AddVectorParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddVectorParameter(string name, string nickname, string description, GH_ParamAccess access, Rhino.Geometry.Vector3d @default) { throw new NotSupportedException("facade"); }
             public int AddPointParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddCurveParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
@@ -165,6 +166,7 @@ namespace Grasshopper.Kernel
             public int AddNumberParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddIntegerParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddTextParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
+            public int AddBooleanParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddGenericParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddVectorParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddParameter(IGH_Param param, string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }

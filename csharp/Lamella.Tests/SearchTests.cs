@@ -1,0 +1,150 @@
+using System;
+using System.Linq;
+using NUnit.Framework;
+
+namespace Lamella.Tests
+{
+    /// <summary>
+    /// The default start search through the binding, on a generated cylinder: stepped until complete, its candidates
+    /// and winner, the field taken once and converged to the family θ names (60°: the paper's pseudo-geodesics against
+    /// the analytic normal; 90°: geodesics, the helices, straight in the development).
+    /// </summary>
+    [TestFixture]
+    public class SearchTests
+    {
+        private Cylinder cylinder;
+
+        [TestFixtureSetUp]
+        public void Surface()
+        {
+            // 20 x 12 cells of about 1.3 x 1.25: 273 vertices, a few hundred milliseconds per search.
+            cylinder = new Cylinder(20, 12, 7);
+        }
+
+        /// <summary>Steps a search on the cylinder until it is complete; checks the stepping contract and the candidates.</summary>
+        private StartSearch Complete(double thetaDegrees)
+        {
+            StartSearch search;
+            using (var mesh = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            {
+                search = new StartSearch(mesh, FieldParams.Default(Family.PseudoGeodesic, thetaDegrees));
+            }
+            Assert.AreEqual(0, search.CandidateCount);
+            Assert.IsNull(search.Winner, "nothing scored yet");
+            int steps = 0;
+            bool more;
+            do
+            {
+                more = search.Step();
+                steps++;
+                Assert.AreEqual(steps, search.CandidateCount, "each step probes one candidate");
+                Assert.AreEqual(!more, search.IsComplete);
+            } while (more && steps < 100);
+            Assert.IsTrue(search.IsComplete);
+            Assert.IsFalse(search.Step(), "a complete search probes nothing more");
+            Assert.AreEqual(steps, search.CandidateCount);
+            Candidate[] candidates = search.Candidates;
+            Console.WriteLine("  θ {0}: {1} candidates\n    {2}", thetaDegrees, candidates.Length, string.Join("\n    ", candidates.Select(c => c.ToString())));
+            for (int i = 0; i < candidates.Length; i++)
+            {
+                Candidate c = candidates[i];
+                Assert.AreEqual(i, c.Index);
+                Assert.AreNotEqual(c.IsScored, c.IsRejected, c.Text);
+                StringAssert.Contains(c.IsScored ? ": score " : ": rejected: ", c.Text);
+                if (c.Kind == StartKind.Height)
+                {
+                    Assert.AreEqual(1.0, Vec.Norm(c.Direction), 1e-12);
+                    StringAssert.StartsWith((c.IsNegated ? "minus " : "") + "height along (", c.Text);
+                }
+                else
+                {
+                    StringAssert.StartsWith("guides from boundary side " + c.Side, c.Text);
+                }
+                if (c.IsScored)
+                {
+                    Assert.LessOrEqual(c.RmsErrorDegrees, c.MaxErrorDegrees + 1e-12);
+                    Assert.GreaterOrEqual(c.Score, c.RmsErrorDegrees + 0.25 * c.MaxErrorDegrees - 1e-9);
+                }
+            }
+            Candidate best = candidates.Where(c => c.IsScored).OrderBy(c => c.Score).First();
+            Assert.AreEqual(best.Index, search.Winner);
+            return search;
+        }
+
+        /// <summary>Takes the search's field (once) and converges it.</summary>
+        private static FieldSolver TakeAndConverge(StartSearch search)
+        {
+            int? winner = search.Winner;
+            int count = search.CandidateCount;
+            FieldSolver field = search.TakeField();
+            Assert.IsTrue(search.IsFieldTaken);
+            Assert.Throws<InvalidOperationException>(() => search.TakeField());
+            Assert.Throws<InvalidOperationException>(() => search.Step());
+            Assert.AreEqual(winner, search.Winner, "the winner stays known after the field was taken");
+            Assert.AreEqual(count, search.Candidates.Length, "the candidates stay readable");
+            FieldReport report = field.Solve(400);
+            Console.WriteLine("  the winner's field: " + report);
+            Assert.IsTrue(report.IsConverged);
+            Assert.AreEqual(0UL, report.SingularVertexCount);
+            return field;
+        }
+
+        [Test]
+        public void SearchLeadsToThePseudoGeodesicsOfTheta()
+        {
+            long before = Library.DebugLiveHandles;
+            using (StartSearch search = Complete(60))
+            {
+                Assert.AreEqual(before + 1, Library.DebugLiveHandles, "the search is one handle (the mesh is disposed)");
+                // Heights come in both signs: F and −F lead to the two mirror families of pseudo-geodesics.
+                Candidate[] heights = search.Candidates.Where(c => c.Kind == StartKind.Height).ToArray();
+                Assert.AreEqual(heights.Length, 2 * heights.Count(c => c.IsNegated));
+                using (FieldSolver field = TakeAndConverge(search))
+                {
+                    Cylinder.Frames frames = Cylinder.FrameErrors(field, cylinder.Xyz, 60);
+                    Console.WriteLine("  frames at {0} vertices: max |angle(b, n) - 60| = {1:0.000}°", frames.Framed, frames.WorstAngle);
+                    Assert.AreEqual(19 * 11, frames.Framed, "every interior vertex");
+                    // Against the analytic normal; the mesh's normals differ by a fraction of h / R ≈ 7.5° here.
+                    Assert.Less(frames.WorstAngle, 3.0);
+                    Assert.Less(frames.WorstTangent, Math.Sin(3.0 * Math.PI / 180));
+                    Assert.Greater(field.Report.EnergyFrame, 0.0, "E_angle with the auxiliary frames of Eq. 9–10");
+                }
+            }
+            Assert.AreEqual(before, Library.DebugLiveHandles);
+        }
+
+        [Test]
+        public void ThetaNinetyGivesTheGeodesicsStraightInTheDevelopment()
+        {
+            using (StartSearch search = Complete(90))
+            {
+                // The library names the family by θ: geodesics, where F and −F are the same family (one sign).
+                Assert.IsFalse(search.Candidates.Any(c => c.IsNegated));
+                using (FieldSolver field = TakeAndConverge(search))
+                using (LevelCurves curves = LevelCurves.Uniform(field, 5, 0))
+                {
+                    double[] points = curves.Points();
+                    int[] offsets = curves.Offsets();
+                    Assert.GreaterOrEqual(curves.Count, 5);
+                    double bend = 0;
+                    for (int c = 0; c < curves.Count; c++)
+                    {
+                        double[] a = Cylinder.Development(Vec.At(points, offsets[c])), b = Cylinder.Development(Vec.At(points, offsets[c + 1] - 1));
+                        double chord = Math.Sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]));
+                        for (int p = offsets[c]; p < offsets[c + 1]; p++)
+                        {
+                            double[] x = Cylinder.Development(Vec.At(points, p));
+                            bend = Math.Max(bend, Math.Abs((b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0])) / chord / chord);
+                        }
+                    }
+                    Console.WriteLine("  θ 90: level curves off their chords in the development by {0:0.###e+0} of the chord", bend);
+                    Assert.Less(bend, 1e-2);
+                    // E_geo (Eq. 13): no auxiliary frames, unlike E_angle.
+                    Assert.AreEqual(0.0, field.Report.EnergyFrame);
+                    // Where a level curve bends (not on rulings), its binormal is at 90°.
+                    Assert.Less(Cylinder.FrameErrors(field, cylinder.Xyz, 90).WorstAngle, 3.0);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,61 @@
+using System.Runtime.InteropServices;
+
+namespace Lamella.Interop
+{
+    /// <summary>
+    /// <c>LmlCandidate</c> as the library writes it: one candidate start of a search and how its short solve ended
+    /// (angles in degrees). The binding hands it out as <see cref="Candidate"/>, with its text.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct CandidateRecord
+    {
+        /// <summary><c>LML_START_HEIGHT</c> or <c>LML_START_GUIDES</c> (<see cref="StartKind"/>).</summary>
+        public uint Kind;
+        /// <summary>Height candidates: 1 when the field is minus the height.</summary>
+        public uint Negated;
+        /// <summary>Height candidates: the unit direction.</summary>
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 3)]
+        public double[] Direction;
+        /// <summary>Guide candidates: the boundary side.</summary>
+        public ulong Side;
+        /// <summary>Guide candidates: the start angle of the guides against the boundary.</summary>
+        public double StartAngleDegrees;
+        /// <summary>1 when scored.</summary>
+        public uint Scored;
+        /// <summary>1 when rejected.</summary>
+        public uint Rejected;
+        /// <summary>Lower is better (valid when scored).</summary>
+        public double Score;
+        /// <summary>RMS angle error along the level curves.</summary>
+        public double RmsErrorDegrees;
+        /// <summary>Largest angle error along the level curves.</summary>
+        public double MaxErrorDegrees;
+        /// <summary>Fraction of nearly straight measured points.</summary>
+        public double StraightFraction;
+        /// <summary>Singular vertices after the short solve.</summary>
+        public ulong SingularVertices;
+    }
+
+    /// <summary><c>LmlVerdict</c> as the library writes it; the binding hands it out as <see cref="Verdict"/>, with the message.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct VerdictRecord
+    {
+        /// <summary>1 when acceptable.</summary>
+        public ulong Acceptable;
+        /// <summary>The tolerance the strips were judged with.</summary>
+        public double ToleranceDegrees;
+        /// <summary>Strips with a quad more than the tolerance off θ.</summary>
+        public ulong StripsMissingTheta;
+        /// <summary>Strips with flipped quads.</summary>
+        public ulong StripsWithFlippedQuads;
+        /// <summary>The strip of the quad that misses θ most.</summary>
+        public ulong WorstStrip;
+        /// <summary>That quad's index along its strip.</summary>
+        public ulong WorstQuad;
+        /// <summary>That quad's centre.</summary>
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 3)]
+        public double[] WorstPoint;
+        /// <summary>That quad's angle error.</summary>
+        public double WorstErrorDegrees;
+    }
+}
