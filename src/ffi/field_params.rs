@@ -40,14 +40,14 @@ pub struct LmlFieldParams {
     /// Target angle between binormal and surface normal in degrees, in [0, 180]; used by
     /// `LML_FAMILY_PSEUDO_GEODESIC` (θ and 180° − θ are the two mirror families), ignored otherwise.
     pub theta_degrees: f64,
-    /// The final weights, held until convergence (default: λ_fair 1e-3, λ_grad 1e-4,
-    /// λ_angle 30, the paper's Table 2, on the normalised problem).
+    /// The final weights, held until convergence (default: λ_fair 1e-3, λ_grad 1e-5,
+    /// λ_angle 30, on the normalised problem: the paper's Table 2 with a tenth of its λ_grad).
     pub weights: LmlWeights,
     /// Target gradient norm ‖∇F‖ of `E_grad` in field units per mesh length unit (strip
     /// spacing ≈ 1 / target); 0 keeps the mean gradient norm of the initial field. Default 0.
     pub gradient_target: f64,
     /// The final stage has converged when 3 iterations in a row each lower the weighted
-    /// energy by less than this fraction. Finite, ≥ 0. Default 1e-3.
+    /// energy by less than this fraction. Finite, ≥ 0. Default 1e-2.
     pub relative_tolerance: f64,
 }
 

@@ -16,8 +16,8 @@ pub(crate) fn released() {
     LIVE_HANDLES.fetch_sub(1, Ordering::Relaxed);
 }
 
-/// The number of handles (`LmlMesh`, `LmlField`, `LmlCurves`, `LmlStrips` and `LmlGuides`
-/// together) created and not yet freed in this process, over all threads: lets bindings and the
+/// The number of handles (`LmlMesh`, `LmlSearch`, `LmlField`, `LmlCurves`, `LmlStrips` and
+/// `LmlGuides` together) created and not yet freed in this process, over all threads: lets bindings and the
 /// C test harness check that every handle is released (e.g. by a garbage collector's
 /// finalizers). Has no other effect.
 #[no_mangle]

@@ -19,11 +19,17 @@ pub struct LmlSearch {
     search: Option<StartSearch>,
     /// The candidates as they were when the field was taken.
     finished: Vec<Candidate>,
+    /// The winner when the field was taken.
+    finished_winner: Option<usize>,
 }
 
 impl LmlSearch {
     fn candidates(&self) -> &[Candidate] {
         self.search.as_ref().map_or(&self.finished, StartSearch::candidates)
+    }
+
+    fn winner(&self) -> Option<usize> {
+        self.search.as_ref().map_or(self.finished_winner, StartSearch::winner)
     }
 }
 
@@ -102,7 +108,7 @@ pub unsafe extern "C" fn lml_search_new(mesh: *const LmlMesh, params: *const Lml
         // and asymptotic curves), its degenerate-family rejection and its measure depend on it.
         params.family = params.family.by_name();
         let search = StartSearch::new(&mesh.mesh, params, SearchOptions::default())?;
-        out.set_owned(LmlSearch { search: Some(search), finished: Vec::new() });
+        out.set_owned(LmlSearch { search: Some(search), finished: Vec::new(), finished_winner: None });
         Ok(LmlStatus::Ok)
     })
 }
@@ -188,7 +194,8 @@ pub unsafe extern "C" fn lml_search_candidate_text(
     })
 }
 
-/// Writes the index of the best candidate so far to `*index`.
+/// Writes the index of the best candidate so far (after `lml_search_field`: the one the field
+/// continues from) to `*index`.
 /// Returns `LML_STATUS_OK`, or `LML_STATUS_INVALID_ARGUMENT` (NULL argument, or no candidate
 /// scored yet: every one so far was rejected).
 #[no_mangle]
@@ -197,11 +204,7 @@ pub unsafe extern "C" fn lml_search_winner(search: *const LmlSearch, index: *mut
         // SAFETY (both blocks): live handle, writable `index`.
         let handle = unsafe { handle(search, "search") }?;
         let mut out = unsafe { Out::new(index, "index") }?;
-        let winner = match &handle.search {
-            Some(search) => search.winner(),
-            None => return Err(Failure::argument("search", "its field was already taken")),
-        };
-        out.set(winner.ok_or_else(|| Failure::argument("search", "no candidate has been scored"))?);
+        out.set(handle.winner().ok_or_else(|| Failure::argument("search", "no candidate has been scored"))?);
         Ok(LmlStatus::Ok)
     })
 }
@@ -222,7 +225,8 @@ pub unsafe extern "C" fn lml_search_field(search: *mut LmlSearch, out: *mut *mut
         let handle = unsafe { handle_mut(search, "search") }?;
         let search = handle.search.take().ok_or_else(|| Failure::argument("search", "its field was already taken"))?;
         let candidates = search.candidates().to_vec();
-        if search.winner().is_none() {
+        let winner = search.winner();
+        if winner.is_none() {
             let message = SearchError::NoStart { reasons: candidates.iter().map(|c| format!("{}: {}", c.kind.describe(), c.rejected.as_deref().unwrap_or("not probed"))).collect() }
                 .to_string();
             handle.search = Some(search);
@@ -233,6 +237,7 @@ pub unsafe extern "C" fn lml_search_field(search: *mut LmlSearch, out: *mut *mut
             other => Failure::new(LmlStatus::SingularField, other.to_string()),
         })?;
         handle.finished = candidates;
+        handle.finished_winner = winner;
         out.set_owned(LmlField::new(solver));
         Ok(LmlStatus::Ok)
     })

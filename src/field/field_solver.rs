@@ -399,7 +399,7 @@ fn validate_weights(w: &Weights) -> Result<(), FieldError> {
     Ok(())
 }
 
-pub(super) fn validate_params(params: &FieldParams) -> Result<(), FieldError> {
+pub(crate) fn validate_params(params: &FieldParams) -> Result<(), FieldError> {
     let theta = params.family.theta_degrees();
     if !(theta.is_finite() && (0.0..=180.0).contains(&theta)) {
         return Err(FieldError::InvalidParameter { name: "theta", message: format!("must lie in [0°, 180°], got {theta}") });

@@ -31,7 +31,7 @@ use serde::{Deserialize, Serialize};
 
 use super::guide_curves::{field_from_guide_curves, GuideCurveOptions};
 use crate::curves::{extract_level_curves, uniform_levels};
-use crate::field::{Family, FieldError, FieldParams, FieldSolver};
+use crate::field::{validate_params, Family, FieldError, FieldParams, FieldSolver};
 use crate::mesh::{TriMesh, Vec3};
 use crate::quality::{family_angles, FamilyAngles};
 use crate::tracing::{boundary_segments, intersections, trace_guide_set, DEFAULT_CORNER_TURN_DEGREES};
@@ -136,7 +136,9 @@ struct Pending {
 impl StartSearch {
     /// Prepares the search for a field of `params` (its family, weights and schedule; its
     /// gradient target is replaced by each candidate's) on `mesh`.
+    /// Errors: `InvalidParameter` for parameters (of the field or the search) out of range.
     pub fn new(mesh: &TriMesh, mut params: FieldParams, options: SearchOptions) -> Result<StartSearch, FieldError> {
+        validate_params(&params)?;
         validate(&options)?;
         params.family = params.family.by_name();
         let mut search = StartSearch {
