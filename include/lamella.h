@@ -230,14 +230,14 @@ typedef struct LmlFieldParams {
   // Target angle between binormal and surface normal in degrees, in [0, 180]; used by
   // `LML_FAMILY_PSEUDO_GEODESIC` (θ and 180° − θ are the two mirror families), ignored otherwise.
   double theta_degrees;
-  // The final weights, held until convergence (default: λ_fair 1e-3, λ_grad 1e-4,
-  // λ_angle 30, the paper's Table 2, on the normalised problem).
+  // The final weights, held until convergence (default: λ_fair 1e-3, λ_grad 1e-5,
+  // λ_angle 30, on the normalised problem: the paper's Table 2 with a tenth of its λ_grad).
   struct LmlWeights weights;
   // Target gradient norm ‖∇F‖ of `E_grad` in field units per mesh length unit (strip
   // spacing ≈ 1 / target); 0 keeps the mean gradient norm of the initial field. Default 0.
   double gradient_target;
   // The final stage has converged when 3 iterations in a row each lower the weighted
-  // energy by less than this fraction. Finite, ≥ 0. Default 1e-3.
+  // energy by less than this fraction. Finite, ≥ 0. Default 1e-2.
   double relative_tolerance;
 } LmlFieldParams;
 
@@ -549,8 +549,8 @@ const char *lml_last_error_message(void);
 // (the panic message may be printed to stderr).
 LmlStatus lml_debug_trigger_panic(void);
 
-// The number of handles (`LmlMesh`, `LmlField`, `LmlCurves`, `LmlStrips` and `LmlGuides`
-// together) created and not yet freed in this process, over all threads: lets bindings and the
+// The number of handles (`LmlMesh`, `LmlSearch`, `LmlField`, `LmlCurves`, `LmlStrips` and
+// `LmlGuides` together) created and not yet freed in this process, over all threads: lets bindings and the
 // C test harness check that every handle is released (e.g. by a garbage collector's
 // finalizers). Has no other effect.
 size_t lml_debug_live_handles(void);
@@ -775,7 +775,8 @@ LmlStatus lml_search_candidate_text(const struct LmlSearch *search,
                                     size_t capacity,
                                     size_t *needed);
 
-// Writes the index of the best candidate so far to `*index`.
+// Writes the index of the best candidate so far (after `lml_search_field`: the one the field
+// continues from) to `*index`.
 // Returns `LML_STATUS_OK`, or `LML_STATUS_INVALID_ARGUMENT` (NULL argument, or no candidate
 // scored yet: every one so far was rejected).
 LmlStatus lml_search_winner(const struct LmlSearch *search, size_t *index);

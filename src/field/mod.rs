@@ -26,6 +26,7 @@ pub use crossing::{find_level_crossing, EdgeCrossing, LevelCrossing};
 pub use darboux::{level_frame, LevelFrame};
 pub use error::FieldError;
 pub use field_solver::{FieldSolver, FIELD_VALUE_LIMIT, MAX_LM_TRIALS};
+pub(crate) use field_solver::validate_params;
 pub use level_angles::{level_angles, AngleRange, LevelAngles};
 pub use problem::FieldProblem;
 pub use params::{Family, FieldParams, Stage, VaryingAngleParams, Weights, SETTLING_ITERATIONS};
