@@ -64,6 +64,15 @@ impl AngleProfile {
         c0 + s * (c1 + s * (c2 + s * c3))
     }
 
+    /// `θ` at the same relative position `s` across the family when the field now spans
+    /// `range` (its current minimum and maximum, `max > min`): the profile follows a relabelling
+    /// of the level sets (a shift or scale of F) instead of sliding along them.
+    pub fn evaluate_in(&self, field_value: f64, range: (f64, f64)) -> f64 {
+        let (min, max) = range;
+        let original = self.field_min + (field_value - min) / (max - min) * (self.field_max - self.field_min);
+        self.evaluate(original)
+    }
+
     /// The profile multiplied by `factor` (e.g. `1 − 5 %`, the lowering of Sec. 3.2).
     pub fn scaled(&self, factor: f64) -> AngleProfile {
         AngleProfile { coefficients: self.coefficients.map(|c| c * factor), ..*self }

@@ -243,12 +243,34 @@ impl VaryingAngleSolver {
         }
     }
 
-    /// `clamp(target(F_v), min_degrees, max_degrees)` per curve vertex. Finite: the profile's
-    /// coefficients and the field values are, and the clamp bounds the extrapolated cubic.
+    /// `clamp(target(F_v), min_degrees, max_degrees)` per curve vertex, the profile taken at the
+    /// vertex's relative position across the field's current range over the curve vertices
+    /// ([`AngleProfile::evaluate_in`]): nothing in the energy fixes a constant added to F, and
+    /// targets read at absolute values would let the family slide along the profile once it is
+    /// frozen. Finite: the profile's coefficients and the field values are, and the clamp bounds
+    /// the extrapolated cubic.
     fn evaluate_targets(&self, target: &AngleProfile) -> Vec<f64> {
         let field = self.solver.field();
-        let (lo, hi) = (self.params.min_degrees, self.params.max_degrees);
-        self.solver.problem.curve_vertices().iter().map(|&v| target.evaluate(field[v as usize]).clamp(lo, hi)).collect()
+        let range = self.field_range(&field);
+        self.solver.problem.curve_vertices().iter().map(|&v| self.target_in(target, field[v as usize], range)).collect()
+    }
+
+    /// The target angle in degrees, in force now, of a point with field value `field_value`
+    /// (in the field's current labelling, as [`Self::field`] gives it): the profile at its
+    /// relative position across the family, clamped.
+    pub fn target_at(&self, field_value: f64) -> f64 {
+        self.target_in(&self.target, field_value, self.field_range(&self.solver.field()))
+    }
+
+    fn target_in(&self, target: &AngleProfile, field_value: f64, range: (f64, f64)) -> f64 {
+        let theta = if range.1 > range.0 { target.evaluate_in(field_value, range) } else { target.evaluate(field_value) };
+        theta.clamp(self.params.min_degrees, self.params.max_degrees)
+    }
+
+    /// The field's range over the curve vertices.
+    fn field_range(&self, field: &[f64]) -> (f64, f64) {
+        let vertices = self.solver.problem.curve_vertices();
+        vertices.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(field[v as usize]), b.max(field[v as usize])))
     }
 
     fn target_range_degrees(&self) -> [f64; 2] {
