@@ -291,7 +291,7 @@ fn long_tokens_and_long_problem_lists_are_cut() {
 #[test]
 fn a_folded_mesh_is_invalid_and_the_fold_is_named() {
     let (positions, faces) = folded(&roof_mesh());
-    let error = TriMesh::from_vertices_and_faces(positions.clone(), faces.clone()).err().expect("a fold is refused");
+    let error = TriMesh::from_vertices_and_faces(positions.clone(), faces.clone()).expect_err("a fold is refused");
     assert!(matches!(error, MeshError::FoldedEdge { .. }), "{error}");
     assert!(error.to_string().contains("fold"), "{error}");
     // Through OBJ and the command line: info says invalid, design exits 2 naming the faces.
@@ -356,7 +356,7 @@ fn sliver_obj(eps: f64) -> String {
 fn a_sliver_mesh_is_bad_input_naming_the_sliver() {
     let dir = Scratch::new("sliver");
     std::fs::write(dir.path("sliver.obj"), sliver_obj(1e-11)).expect("write");
-    let error = TriMesh::parse_obj(&sliver_obj(1e-11)).err().expect("refused");
+    let error = TriMesh::parse_obj(&sliver_obj(1e-11)).expect_err("refused");
     assert!(matches!(&error, MeshError::ObjLine { error, .. } if matches!(**error, MeshError::SliverFace { face: 8, .. })), "{error}");
     assert_bad_input(&dir.0, &["design", "--mesh", "sliver.obj", "--guides", "3", "--out", "d", "--quiet"], &["sliver.obj", "face 8 is a sliver"]);
     // A mild sliver (area ratio 2e-6) is valid and designs.

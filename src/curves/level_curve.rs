@@ -36,7 +36,7 @@ pub fn resample_all(curves: &[LevelCurve], spacing: f64) -> Result<Vec<LevelCurv
         return Err(CurveError::InvalidSpacing { spacing });
     }
     let total: f64 = curves.iter().map(|c| (c.length() / spacing).round().max(3.0) + 1.0).sum();
-    if !(total < MAX_CURVE_POINTS as f64) {
+    if !total.is_finite() || total >= MAX_CURVE_POINTS as f64 {
         return Err(CurveError::TooManyPoints { spacing, points: total });
     }
     curves.iter().map(|c| c.resampled(spacing)).collect()
@@ -82,7 +82,7 @@ impl LevelCurve {
         }
         let minimum = if self.closed { 3 } else { 1 };
         let steps = (length / spacing).round();
-        if !(steps < super::MAX_CURVE_POINTS as f64) {
+        if !steps.is_finite() || steps >= super::MAX_CURVE_POINTS as f64 {
             return Err(CurveError::TooManyPoints { spacing, points: steps });
         }
         let segments = (steps as usize).max(minimum);

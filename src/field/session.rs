@@ -54,7 +54,7 @@ fn check_counts(session: &Session) -> Result<(), FieldError> {
         return Err(corrupt("saved stage counters exceed the iteration count"));
     }
     let DampingState { mu, nu } = session.damping;
-    if !mu.is_none_or(|mu| mu.is_finite() && mu > 0.0) || !(nu.is_finite() && nu >= 1.0) {
+    if !mu.is_none_or(|mu| mu.is_finite() && mu > 0.0) || !nu.is_finite() || nu < 1.0 {
         return Err(corrupt(format!("saved damping state (μ {mu:?}, ν {nu}) is out of range")));
     }
     Ok(())
@@ -142,7 +142,7 @@ impl FieldSolver {
         let vertices = solver.problem.mesh().vertex_count();
         let limit = super::FIELD_VALUE_LIMIT;
         let unscaled = |v: &f64| v / session.scales.field;
-        if let Some(vertex) = session.x[..vertices].iter().map(unscaled).position(|f| !(f.abs() <= limit)) {
+        if let Some(vertex) = session.x[..vertices].iter().map(unscaled).position(|f| f.is_nan() || f.abs() > limit) {
             return Err(corrupt(format!("the saved field at vertex {vertex} un-scales to {:e}, outside ±{limit:e}", unscaled(&session.x[vertex]))));
         }
         solver.problem.mesh().try_scaled(1.0 / session.scales.length).map_err(|e| corrupt(format!("the saved mesh does not un-scale: {e}")))?;

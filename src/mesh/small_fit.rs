@@ -84,10 +84,8 @@ mod tests {
                 let dot: f64 = (0..7).map(|i| basis[a * 7 + i] * basis[b * 7 + i]).sum();
                 assert!((dot - f64::from(u8::from(a == b))).abs() < 1e-12);
             }
-            for c in 0..3 {
-                let dot: f64 = (0..7).map(|i| basis[a * 7 + i] * rows[i][c]).sum();
-                assert!(dot.abs() < 1e-12);
-            }
+            let column_dot = |c: usize| (0..7).map(|i| basis[a * 7 + i] * rows[i][c]).sum::<f64>();
+            assert!((0..3).all(|c| column_dot(c).abs() < 1e-12));
         }
         // A quadratic is fitted exactly.
         let values: Vec<f64> = rows.iter().map(|r| 2.0 - r[1] + 0.5 * r[2]).collect();

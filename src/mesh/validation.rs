@@ -16,7 +16,7 @@
 //!    [`MIN_NEIGHBOUR_AREA_RATIO`] times a neighbour's (both checked on the same oriented
 //!    manifold);
 //! 10. derived geometry out of the range of f64 (checked on the built mesh, so only when
-//!    everything else passed).
+//!     everything else passed).
 
 use super::error::MeshError;
 use super::topology::{self, BoundaryEdge, EdgeTable};
