@@ -781,6 +781,13 @@ LmlStatus lml_search_candidate_text(const struct LmlSearch *search,
 // scored yet: every one so far was rejected).
 LmlStatus lml_search_winner(const struct LmlSearch *search, size_t *index);
 
+// Writes to `*count` the vertex count of the coarsening the candidates are probed on, or 0
+// when they are probed on the mesh itself. A mesh of more than 1.5 × 3,000 vertices is
+// searched on a coarsening of about 3,000 vertices (a subset of its vertices, same outline and
+// topology); the winner's field is carried to the full mesh by `lml_search_field`.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_search_proxy_vertex_count(const struct LmlSearch *search, size_t *count);
+
 // Takes the field of the best candidate: a new `LmlField` (owned by the caller, released with
 // `lml_field_free`) that continues from where that candidate's short solve ended, with the
 // final weights; step it to convergence. Ends the search (its candidates stay readable).

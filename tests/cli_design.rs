@@ -4,7 +4,7 @@
 
 mod cli_support;
 
-use cli_support::{assert_ok, lamella, parse_svg, polygon_points, read_json, stderr, Element, Scratch};
+use cli_support::{assert_ok, lamella, parse_svg, polygon_points, read_json, small_roof, stderr, Element, Scratch};
 use std::path::Path;
 
 /// Axis-aligned bounding box of points: (min, max).
@@ -70,6 +70,7 @@ fn default_run_meets_the_quality_bounds_and_writes_well_formed_files() {
     assert_eq!(report["strips"]["overall"]["strip_count"].as_u64(), Some(strips.len() as u64));
     assert_eq!(report["strips"]["acceptable"], true, "{}", report["strips"]["verdict_message"]);
     assert_eq!(report["parameters"]["start"]["kind"], "search");
+    assert!(report["parameters"]["start"]["proxy_vertices"].is_null(), "a 3,000-vertex mesh is searched itself");
     // Per-iteration history: iterations 0, 1, …, n without gaps.
     let history = report["field"]["history"].as_array().expect("history");
     let iterations = report["field"]["iterations"].as_u64().expect("iterations");
@@ -144,4 +145,24 @@ fn family_names_and_their_angles_must_agree() {
         assert_eq!(output.status.code(), Some(2), "{args:?}: {}", stderr(&output));
         assert!(stderr(&output).contains(needle), "{args:?}: `{needle}` not in {}", stderr(&output));
     }
+}
+
+#[test]
+fn a_large_mesh_is_searched_on_a_coarsening_and_designed_in_full() {
+    // 6,000 vertices: the start search probes its candidates on a 3,000-vertex coarsening, then
+    // the winner's field is carried to the full mesh and converged there.
+    let dir = Scratch::new("proxy");
+    small_roof(&dir, 6000);
+    let output = lamella(&dir.0, &["design", "--mesh", "roof.obj", "--strips", "12", "--out", "d"]);
+    assert_ok(&output);
+    let line = stderr(&output).lines().find(|l| l.starts_with("start search")).unwrap_or_default().to_string();
+    assert!(line.starts_with("start search on a ") && line.contains("-vertex coarsening"), "{line}");
+    let report = read_json(&dir.path("d/report.json"));
+    let proxy = report["parameters"]["start"]["proxy_vertices"].as_u64().expect("proxy vertex count");
+    assert!((2500..=3000).contains(&proxy), "{proxy}");
+    assert!(line.contains(&format!("on a {proxy}-vertex")), "{line}");
+    let values = std::fs::read_to_string(dir.path("d/field.csv")).expect("field").lines().filter(|l| l.parse::<f64>().is_ok()).count();
+    assert!(values > 5000, "the field covers the full mesh: {values} values");
+    assert_eq!(report["strips"]["acceptable"], true, "{}", report["strips"]["verdict_message"]);
+    assert_eq!(report["strips"]["overall"]["flipped_quads"].as_u64(), Some(0));
 }

@@ -146,5 +146,34 @@ namespace Lamella.Tests
                 }
             }
         }
+
+        [Test]
+        public void LargeMeshesAreSearchedOnACoarsening()
+        {
+            using (var small = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            using (var search = new StartSearch(small, FieldParams.Default(Family.PseudoGeodesic, 60)))
+            {
+                Assert.IsNull(search.ProxyVertexCount, "a small mesh is searched itself");
+            }
+            // 90 x 60 cells: 5,551 vertices, more than 1.5 x 3,000.
+            var fine = new Cylinder(90, 60, 5);
+            using (var mesh = LamellaMesh.FromArrays(fine.Xyz, fine.Triangles))
+            using (var search = new StartSearch(mesh, FieldParams.Default(Family.PseudoGeodesic, 60)))
+            {
+                int? proxy = search.ProxyVertexCount;
+                Console.WriteLine("  {0} vertices searched on a {1}-vertex coarsening", fine.VertexCount, proxy);
+                Assert.IsNotNull(proxy);
+                Assert.GreaterOrEqual(proxy.Value, 2500);
+                Assert.LessOrEqual(proxy.Value, 3000);
+                Assert.IsTrue(search.Step(), "more candidates remain after the first");
+                Assert.IsTrue(search.Candidate(0).IsScored, search.Candidate(0).Text);
+                using (FieldSolver field = search.TakeField())
+                {
+                    Assert.AreEqual(fine.VertexCount, field.Values().Length, "the field is carried to every vertex of the mesh");
+                    Assert.IsTrue(field.Values().All(v => !double.IsNaN(v) && !double.IsInfinity(v)));
+                }
+                Assert.AreEqual(proxy, search.ProxyVertexCount, "still readable after the field was taken");
+            }
+        }
     }
 }

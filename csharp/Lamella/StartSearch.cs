@@ -113,6 +113,22 @@ namespace Lamella
             return more;
         }
 
+        /// <summary>
+        /// The vertex count of the coarsening the candidates are probed on (a mesh of more than 1.5 × 3,000 vertices is
+        /// searched on a coarsening of about 3,000 of its own vertices, and <see cref="TakeField"/> carries the winner's
+        /// field to the full mesh); null when they are probed on the mesh itself.
+        /// </summary>
+        public int? ProxyVertexCount
+        {
+            get
+            {
+                UIntPtr count;
+                Native.Check(NativeMethods.lml_search_proxy_vertex_count(Handle, out count));
+                int n = Native.Count(count);
+                return n == 0 ? (int?)null : n;
+            }
+        }
+
         /// <summary>The number of candidates probed so far.</summary>
         public int CandidateCount
         {

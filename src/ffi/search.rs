@@ -21,6 +21,8 @@ pub struct LmlSearch {
     finished: Vec<Candidate>,
     /// The winner when the field was taken.
     finished_winner: Option<usize>,
+    /// Vertex count of the coarsening the candidates are probed on, 0 for the mesh itself.
+    proxy_vertices: usize,
 }
 
 impl LmlSearch {
@@ -108,7 +110,8 @@ pub unsafe extern "C" fn lml_search_new(mesh: *const LmlMesh, params: *const Lml
         // and asymptotic curves), its degenerate-family rejection and its measure depend on it.
         params.family = params.family.by_name();
         let search = StartSearch::new(&mesh.mesh, params, SearchOptions::default())?;
-        out.set_owned(LmlSearch { search: Some(search), finished: Vec::new(), finished_winner: None });
+        let proxy_vertices = search.proxy_vertex_count().unwrap_or(0);
+        out.set_owned(LmlSearch { search: Some(search), finished: Vec::new(), finished_winner: None, proxy_vertices });
         Ok(LmlStatus::Ok)
     })
 }
@@ -205,6 +208,21 @@ pub unsafe extern "C" fn lml_search_winner(search: *const LmlSearch, index: *mut
         let handle = unsafe { handle(search, "search") }?;
         let mut out = unsafe { Out::new(index, "index") }?;
         out.set(handle.winner().ok_or_else(|| Failure::argument("search", "no candidate has been scored"))?);
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// Writes to `*count` the vertex count of the coarsening the candidates are probed on, or 0
+/// when they are probed on the mesh itself. A mesh of more than 1.5 × 3,000 vertices is
+/// searched on a coarsening of about 3,000 vertices (a subset of its vertices, same outline and
+/// topology); the winner's field is carried to the full mesh by `lml_search_field`.
+/// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+#[no_mangle]
+pub unsafe extern "C" fn lml_search_proxy_vertex_count(search: *const LmlSearch, count: *mut usize) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle, writable `count`.
+        let search = unsafe { handle(search, "search") }?;
+        unsafe { Out::new(count, "count") }?.set(search.proxy_vertices);
         Ok(LmlStatus::Ok)
     })
 }

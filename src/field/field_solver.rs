@@ -5,7 +5,7 @@ use super::darboux::LevelFrame;
 use super::error::FieldError;
 use super::failure_site::largest_residual_vertices;
 use super::gradient_norm::mean_gradient_norm;
-use super::params::{Family, FieldParams, Weights, SETTLED_CURVE_ENERGY, SETTLING_ITERATIONS};
+use super::params::{Family, FieldParams, Weights, FAMILY_MET_CURVE_ENERGY, SETTLED_CURVE_ENERGY, SETTLING_ITERATIONS};
 use super::problem::FieldProblem;
 use super::report::{curve_energy, problem_frames, Evaluated, StepReport};
 use crate::mesh::{TriMesh, Vec3};
@@ -157,6 +157,7 @@ impl FieldSolver {
         while ran < max_iterations && !self.converged {
             flips += self.reorient_side_vectors();
             iterated_weights = Some(self.problem.weights());
+            let damping_before = self.lm.damping();
             let outcome = self.lm.iterate(&self.problem, &mut self.x).map_err(|error| self.located(error))?;
             if outcome.accepted {
                 self.frames = None;
@@ -165,7 +166,13 @@ impl FieldSolver {
             self.iterations += 1;
             self.stage_iterations += 1;
             let decrease = outcome.energy_before - outcome.energy_after;
-            if decrease <= self.params.relative_tolerance * outcome.energy_before {
+            // A small decrease counts as slow unless the damping held the step back (its gain
+            // ratio was so good that μ fell by half or more) while the family is still far: a
+            // solve that has just entered a stage takes several such steps while μ falls from
+            // its restart value. Once the family is met, what is left is the regularisers' drift.
+            let slow = decrease <= self.params.relative_tolerance * outcome.energy_before
+                && (!outcome.accepted || outcome.damping > 0.5 * damping_before || self.family_met());
+            if slow {
                 self.slow_iterations += 1;
             } else {
                 self.slow_iterations = 0;
@@ -326,6 +333,15 @@ impl FieldSolver {
     fn take_frames(&mut self) -> Vec<Option<LevelFrame>> {
         let frames = self.frames.take();
         frames.unwrap_or_else(|| problem_frames(&self.problem, &self.x))
+    }
+
+    /// Whether the unweighted curve terms at x ([`curve_energy`], from the residuals of the
+    /// accepted iteration), per curve vertex, are within [`FAMILY_MET_CURVE_ENERGY`].
+    fn family_met(&self) -> bool {
+        let accepted = |b| self.lm.accepted_residuals(b);
+        let evaluated = Evaluated { weights: self.problem.weights(), residuals: &accepted };
+        let curve_vertices = self.problem.curve_vertices().len().max(1) as f64;
+        curve_energy(&self.problem, &self.x, Some(&evaluated)) <= FAMILY_MET_CURVE_ENERGY * curve_vertices
     }
 
     /// Whether the unweighted curve terms at x ([`curve_energy`]) have fallen to

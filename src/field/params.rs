@@ -88,6 +88,12 @@ pub const SETTLING_ITERATIONS: usize = 3;
 /// can drift for hundreds of iterations when the guides ask for a spacing the family cannot keep.
 pub const SETTLED_CURVE_ENERGY: f64 = 1e-7;
 
+/// Unweighted curve terms (as for [`SETTLED_CURVE_ENERGY`]) per curve vertex at which the family
+/// counts as met for the convergence test: a mean squared angle residual of 1e-5, about 0.2° RMS.
+/// Above it, steps that the damping holds back do not count as slow (see
+/// [`FieldParams::relative_tolerance`]).
+pub const FAMILY_MET_CURVE_ENERGY: f64 = 1e-5;
+
 /// Parameters of a field optimisation.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct FieldParams {
@@ -100,7 +106,9 @@ pub struct FieldParams {
     /// `None` keeps the area-weighted mean gradient norm of the initial field.
     pub gradient_target: Option<f64>,
     /// The final stage has converged when [`SETTLING_ITERATIONS`] iterations in a row each lower
-    /// the weighted energy `E_pg` by less than this fraction, or when Levenberg–Marquardt meets
+    /// the weighted energy `E_pg` by less than this fraction (steps held back by the damping, which
+    /// cut μ by half or more, count only once the family is met, [`FAMILY_MET_CURVE_ENERGY`]), or
+    /// when Levenberg–Marquardt meets
     /// one of its own stopping rules. Past that point the curve term is met and the small
     /// regularisers only drift the spacing of the family, slowly.
     pub relative_tolerance: f64,

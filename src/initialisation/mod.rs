@@ -14,6 +14,7 @@ mod conformal_map;
 mod error;
 mod guide_curves;
 mod linear_least_squares;
+mod proxy;
 mod smoothness_rows;
 mod start_search;
 mod stroke_field;

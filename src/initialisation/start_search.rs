@@ -9,6 +9,11 @@
 //! judges the level curves each one reaches as an outside reviewer would
 //! ([`crate::quality::family_angles`]), rejects degenerate families, and hands the best one on.
 //!
+//! On a mesh of more than 1.5 × [`SearchOptions::proxy_vertices`] vertices the short solves run
+//! on a coarsening of it to that size (`super::proxy`): probes converge more slowly on finer
+//! meshes, and the choice of start does not depend on the resolution. The winner's field is
+//! then carried to the mesh, where the solve continues with the final weights.
+//!
 //! Candidates, in this order (the order settles ties, so the search is deterministic):
 //! 1. heights along directions in the principal plane of the surface (the two largest axes of
 //!    the vertex positions' covariance), at `directions` evenly spaced angles, each with both
@@ -30,6 +35,7 @@ use nalgebra::{Matrix3, SymmetricEigen};
 use serde::{Deserialize, Serialize};
 
 use super::guide_curves::{field_from_guide_curves, GuideCurveOptions};
+use super::proxy::{carried_to, search_proxy};
 use crate::curves::{extract_level_curves, uniform_levels};
 use crate::field::{validate_params, Family, FieldError, FieldParams, FieldSolver};
 use crate::mesh::{TriMesh, Vec3};
@@ -59,6 +65,10 @@ pub struct SearchOptions {
     pub guides: usize,
     /// A candidate scoring at most this is good enough to skip the guide candidates. Default 3.
     pub acceptable_score: f64,
+    /// Size of the stand-in the candidates are probed on when the mesh has more than 1.5 times
+    /// as many vertices (0: always probe on the mesh itself). Default 3,000, where a probe's 20
+    /// iterations reach a family that judges the start fairly.
+    pub proxy_vertices: usize,
 }
 
 impl Default for SearchOptions {
@@ -72,6 +82,7 @@ impl Default for SearchOptions {
             guide_angles: vec![60.0, 90.0, 120.0],
             guides: 4,
             acceptable_score: 3.0,
+            proxy_vertices: 3_000,
         }
     }
 }
@@ -115,6 +126,8 @@ impl StartKind {
 /// The search, stepped one candidate at a time (each step runs one short solve).
 pub struct StartSearch {
     mesh: TriMesh,
+    /// The coarsening of `mesh` the candidates are probed on, when `mesh` is large.
+    proxy: Option<TriMesh>,
     params: FieldParams,
     options: SearchOptions,
     /// One solver restarted for every candidate, so the problem is prepared once.
@@ -143,6 +156,7 @@ impl StartSearch {
         params.family = params.family.by_name();
         let mut search = StartSearch {
             mesh: mesh.clone(),
+            proxy: search_proxy(mesh, options.proxy_vertices),
             params,
             options,
             solver: None,
@@ -204,6 +218,12 @@ impl StartSearch {
         &self.candidates
     }
 
+    /// Vertex count of the coarsening the candidates are probed on; `None` when they are probed
+    /// on the mesh itself.
+    pub fn proxy_vertex_count(&self) -> Option<usize> {
+        self.proxy.as_ref().map(TriMesh::vertex_count)
+    }
+
     /// Index (into [`Self::candidates`]) of the best candidate so far.
     pub fn winner(&self) -> Option<usize> {
         self.best.as_ref().map(|(i, _, _)| *i)
@@ -215,17 +235,23 @@ impl StartSearch {
         Ok(())
     }
 
-    /// The solver for the winner: restarted from the field its short solve reached, with the
-    /// final weights of `params` (its warm-up is behind it), ready to be stepped to convergence.
+    /// The solver for the winner: restarted from the field its short solve reached (carried to
+    /// the mesh when probed on a coarsening), with the final weights of `params` (its warm-up is
+    /// behind it), ready to be stepped to convergence.
     /// `Err(NoStart)` names every candidate's reason when all were rejected.
     pub fn into_solver(mut self) -> Result<FieldSolver, SearchError> {
-        let Some((_, _, field)) = self.best.take() else {
+        let Some((_, _, probed)) = self.best.take() else {
             let reasons = self.candidates.iter().map(|c| format!("{}: {}", c.kind.describe(), c.rejected.as_deref().unwrap_or("not probed"))).collect();
             return Err(SearchError::NoStart { reasons });
         };
         let mut params = self.params.clone();
         params.schedule.clear();
         params.gradient_target = None;
+        if let Some(proxy) = &self.proxy {
+            let field = carried_to(proxy, &probed, &self.mesh);
+            return FieldSolver::new(&self.mesh, &field, params).map_err(SearchError::Field);
+        }
+        let field = probed;
         let mut solver = match self.solver.take() {
             Some(solver) => solver,
             None => FieldSolver::new(&self.mesh, &field, params.clone()).map_err(SearchError::Field)?,
@@ -242,15 +268,20 @@ impl StartSearch {
         matches!(self.params.family, Family::PseudoGeodesic { .. })
     }
 
+    /// The mesh the candidates are probed on.
+    fn probed_mesh(&self) -> &TriMesh {
+        self.proxy.as_ref().unwrap_or(&self.mesh)
+    }
+
     fn queue_heights(&mut self) {
-        let [first, second] = principal_plane(&self.mesh);
+        let [first, second] = principal_plane(self.probed_mesh());
         let signs: &[bool] = if self.is_pseudo_geodesic() { &[false, true] } else { &[false] };
         for k in 0..self.options.directions {
             let angle = std::f64::consts::PI * k as f64 / self.options.directions as f64;
             let d = first * angle.cos() + second * angle.sin();
             for &negated in signs {
                 let sign = if negated { -1.0 } else { 1.0 };
-                let field = self.mesh.positions().iter().map(|p| sign * p.dot(&d)).collect();
+                let field = self.probed_mesh().positions().iter().map(|p| sign * p.dot(&d)).collect();
                 self.pending.push_back(Pending { kind: StartKind::Height { direction: [d.x, d.y, d.z], negated }, field: Ok(field), gradient_target: None });
             }
         }
@@ -258,18 +289,21 @@ impl StartSearch {
 
     fn queue_guides(&mut self) {
         self.guides_queued = true;
-        let sides = boundary_segments(&self.mesh, 0, DEFAULT_CORNER_TURN_DEGREES).map_or(0, |s| s.len());
+        let mesh = self.probed_mesh();
+        let sides = boundary_segments(mesh, 0, DEFAULT_CORNER_TURN_DEGREES).map_or(0, |s| s.len());
         let theta = self.params.family.theta_degrees();
+        let mut queued = Vec::new();
         for side in 0..sides {
             for &start_angle in &self.options.guide_angles {
                 let kind = StartKind::Guides { side, start_angle_degrees: start_angle };
-                let (field, gradient_target) = match guide_field(&self.mesh, self.options.guides, side, start_angle, theta) {
+                let (field, gradient_target) = match guide_field(mesh, self.options.guides, side, start_angle, theta) {
                     Ok((field, target)) => (Ok(field), Some(target)),
                     Err(reason) => (Err(reason), None),
                 };
-                self.pending.push_back(Pending { kind, field, gradient_target });
+                queued.push(Pending { kind, field, gradient_target });
             }
         }
+        self.pending.extend(queued);
     }
 
     /// Runs the short solve from `field` and measures where it ends: `Ok(Err(reason))` rejects
@@ -285,7 +319,7 @@ impl StartSearch {
         let restarted = if let Some(solver) = self.solver.as_mut() {
             solver.restart(field, params)
         } else {
-            FieldSolver::new(&self.mesh, field, params).map(|solver| self.solver = Some(solver))
+            FieldSolver::new(self.probed_mesh(), field, params).map(|solver| self.solver = Some(solver))
         };
         if let Err(error) = restarted {
             return match error {
@@ -318,10 +352,11 @@ impl StartSearch {
 
     /// The family measure of `field`'s level curves.
     fn measure(&self, field: &[f64]) -> Result<FamilyAngles, String> {
-        let levels = uniform_levels(&self.mesh, field, self.options.levels).map_err(|e| format!("no level curves: {e}"))?;
-        let curves = extract_level_curves(&self.mesh, field, &levels).map_err(|e| format!("no level curves: {e}"))?;
-        let (low, high) = self.mesh.bounding_box();
-        let spacing = self.options.spacing_edges * self.mesh.mean_edge_length();
+        let mesh = self.probed_mesh();
+        let levels = uniform_levels(mesh, field, self.options.levels).map_err(|e| format!("no level curves: {e}"))?;
+        let curves = extract_level_curves(mesh, field, &levels).map_err(|e| format!("no level curves: {e}"))?;
+        let (low, high) = mesh.bounding_box();
+        let spacing = self.options.spacing_edges * mesh.mean_edge_length();
         family_angles(&curves, self.params.family, spacing, (high - low).norm()).map_err(|e| format!("level curves not measurable: {e}"))
     }
 
@@ -336,7 +371,7 @@ impl StartSearch {
                 100.0 * straight
             ));
         }
-        let singular_fraction = singular as f64 / self.mesh.vertex_count() as f64;
+        let singular_fraction = singular as f64 / self.probed_mesh().vertex_count() as f64;
         Ok(measure.rms_error_degrees + 0.25 * measure.max_error_degrees + STRAIGHT_PENALTY * straight + SINGULAR_PENALTY * singular_fraction)
     }
 }
@@ -348,6 +383,9 @@ pub struct SearchOutcome {
     pub candidates: Vec<Candidate>,
     /// Index into `candidates`.
     pub winner: usize,
+    /// Vertex count of the coarsening the candidates were probed on, if any
+    /// ([`StartSearch::proxy_vertex_count`]).
+    pub proxy_vertices: Option<usize>,
 }
 
 /// Runs the whole search for a field of `params` on `mesh` (see [`StartSearch`]).
@@ -356,9 +394,10 @@ pub fn search_start(mesh: &TriMesh, params: FieldParams, options: SearchOptions)
     search.run().map_err(SearchError::Field)?;
     let candidates = search.candidates().to_vec();
     let winner = search.winner();
+    let proxy_vertices = search.proxy_vertex_count();
     let solver = search.into_solver()?;
     // Invariant: into_solver succeeds only with a winner.
-    Ok(SearchOutcome { solver, candidates, winner: winner.unwrap_or(0) })
+    Ok(SearchOutcome { solver, candidates, winner: winner.unwrap_or(0), proxy_vertices })
 }
 
 /// Above this fraction of straight level-curve points a pseudo-geodesic start is rejected unsolved.
@@ -408,6 +447,9 @@ fn validate(options: &SearchOptions) -> Result<(), FieldError> {
     }
     if options.guide_angles.iter().any(|a| !(a.is_finite() && *a > 0.0 && *a < 180.0)) {
         return invalid("guide_angles", "each must lie in (0°, 180°)");
+    }
+    if (1..100).contains(&options.proxy_vertices) {
+        return invalid("proxy_vertices", "must be 0 (no stand-in) or ≥ 100");
     }
     if !options.acceptable_score.is_finite() {
         return invalid("acceptable_score", "must be finite");

@@ -4,6 +4,7 @@
 //! boundary loops, edge → face adjacency, and unit scaling.
 
 mod closest_point;
+mod decimation;
 mod edge_faces;
 mod edge_point;
 mod error;
@@ -22,8 +23,9 @@ mod union_find;
 mod validation;
 mod voronoi_area;
 
-pub use edge_faces::EdgeFaces;
 pub(crate) use closest_point::closest_barycentric;
+pub use decimation::{coarsened, MAX_BOUNDARY_TURN_DEGREES, MAX_NORMAL_DEVIATION_DEGREES, MIN_TRIANGLE_QUALITY};
+pub use edge_faces::EdgeFaces;
 pub use edge_point::EdgePoint;
 pub use error::MeshError;
 pub use face_bvh::{ClosestFace, FaceBvh};

@@ -2,7 +2,7 @@
  * (step until done, candidates and their texts, the winner, the field taken once and stepped to
  * convergence) on a small harness cylinder, and the families named by theta: 60 degrees gives
  * the pseudo-geodesics of the paper, 90 the geodesics (helices: straight in the development),
- * 0 the asymptotic curves (the rulings). */
+ * 0 the asymptotic curves (the rulings); a large mesh searched on its coarsening. */
 #include "check.h"
 #include "harness.h"
 
@@ -467,6 +467,60 @@ static void every_candidate_rejected(void)
     lml_search_free(search);
 }
 
+/* A mesh of more than 1.5 x 3,000 vertices is searched on a coarsening: a few thousand of its own
+ * vertices; the field the search hands over lives on the full mesh. A small mesh is searched
+ * itself (proxy count 0). */
+static void coarse_stand_in(const LmlMesh *small)
+{
+    Cylinder fine;
+    LmlMesh *mesh = NULL;
+    LmlSearch *search = NULL;
+    LmlField *field = NULL;
+    LmlFieldParams params;
+    LmlCandidate candidate;
+    size_t proxy = 99, needed = 0;
+
+    CHECK_STATUS(lml_field_params_default(LML_FAMILY_PSEUDO_GEODESIC, 60.0, &params), LML_STATUS_OK);
+    CHECK_STATUS(lml_search_new(small, &params, &search), LML_STATUS_OK);
+    CHECK_STATUS(lml_search_proxy_vertex_count(search, NULL), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_STATUS(lml_search_proxy_vertex_count(search, &proxy), LML_STATUS_OK);
+    CHECK(proxy == 0);
+    lml_search_free(search);
+    search = NULL;
+    CHECK_STATUS(lml_search_proxy_vertex_count(NULL, &proxy), LML_STATUS_INVALID_ARGUMENT);
+
+    if (!cylinder_generate(&fine, 90, 60, 5)) {
+        CHECK(!"out of memory");
+        return;
+    }
+    CHECK_STATUS(lml_mesh_new(fine.xyz, fine.vertex_count, fine.triangles, fine.triangle_count, &mesh), LML_STATUS_OK);
+    if (mesh != NULL) {
+        CHECK_STATUS(lml_search_new(mesh, &params, &search), LML_STATUS_OK);
+    }
+    if (search != NULL) {
+        CHECK_STATUS(lml_search_proxy_vertex_count(search, &proxy), LML_STATUS_OK);
+        printf("  search on %lu vertices probes a %lu-vertex coarsening\n", (unsigned long)fine.vertex_count,
+               (unsigned long)proxy);
+        CHECK(proxy >= 2500 && proxy <= 3000 && proxy < fine.vertex_count);
+        /* One probe, then its field is carried to every vertex of the full mesh. */
+        CHECK_STATUS(lml_search_step(search), LML_STATUS_MORE);
+        CHECK_STATUS(lml_search_candidate(search, 0, &candidate), LML_STATUS_OK);
+        CHECK(candidate.scored == 1 && candidate.rms_error_degrees < 45.0);
+        CHECK_STATUS(lml_search_field(search, &field), LML_STATUS_OK);
+        /* The count stays readable after the field was taken. */
+        CHECK_STATUS(lml_search_proxy_vertex_count(search, &needed), LML_STATUS_OK);
+        CHECK(needed == proxy);
+    }
+    if (field != NULL) {
+        CHECK_STATUS(lml_field_values(field, NULL, 0, &needed), LML_STATUS_BUFFER_TOO_SMALL);
+        CHECK(needed == fine.vertex_count);
+    }
+    lml_field_free(field);
+    lml_search_free(search);
+    lml_mesh_free(mesh);
+    cylinder_free(&fine);
+}
+
 void test_search(const Cylinder *c)
 {
     LmlMesh *mesh = NULL;
@@ -475,6 +529,7 @@ void test_search(const Cylinder *c)
         return;
     }
     bad_inputs(mesh);
+    coarse_stand_in(mesh);
     pseudo_geodesics(mesh, c);
     named_families(mesh);
     lml_mesh_free(mesh);

@@ -72,6 +72,7 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_search_candidate_text(SearchHandle search, UIntPtr index, [Out] byte[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_search_winner(SearchHandle search, out UIntPtr index);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_search_proxy_vertex_count(SearchHandle search, out UIntPtr count);
         [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_search_field(SearchHandle search, out FieldHandle field);
 
         [DllImport(Library, CallingConvention = Cdecl)]

@@ -118,16 +118,18 @@ fn search(mesh: &TriMesh, theta: f64, verbosity: Verbosity) -> CliResult<Started
     })).collect();
     let winner = search.winner();
     let chosen = winner.map(|w| search.candidates()[w].kind.describe());
+    let proxy_vertices = search.proxy_vertex_count();
     note(
         verbosity,
         &format!(
-            "start search: {} candidates in {:.1} s; {}",
+            "start search{}: {} candidates in {:.1} s; {}",
+            proxy_vertices.map_or(String::new(), |n| format!(" on a {n}-vertex coarsening")),
             candidates.len(),
             started.elapsed().as_secs_f64(),
             chosen.as_deref().map_or("none acceptable".to_string(), |c| format!("continuing from {c}"))
         ),
     );
-    let description = json!({ "kind": "search", "winner": winner, "candidates": candidates });
+    let description = json!({ "kind": "search", "proxy_vertices": proxy_vertices, "winner": winner, "candidates": candidates });
     let solver = search.into_solver().map_err(|e| match e {
         SearchError::NoStart { .. } => CliError::bad_input(format!("{e}; give a start (--guides, --direction, --strokes, --start-field)")),
         SearchError::Field(error) => field_error(error),
