@@ -13,7 +13,9 @@ build="$target/c-abi"
 mkdir -p "$build"
 
 echo "== C ABI: library"
-cargo build --locked --lib
+# With --tests: the build `cargo test` made (dev-dependencies unify the dependencies' features;
+# a plain `cargo build --lib` would rebuild every dependency for the other feature set).
+cargo build --locked --lib --tests
 
 if ! command -v valgrind >/dev/null; then
     echo "== C ABI: installing valgrind"

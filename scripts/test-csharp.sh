@@ -30,7 +30,9 @@ if ((${#missing[@]})); then
 fi
 
 echo "== C#: native library"
-cargo build --locked --lib
+# With --tests: the build `cargo test` made (dev-dependencies unify the dependencies' features;
+# a plain `cargo build --lib` would rebuild every dependency for the other feature set).
+cargo build --locked --lib --tests
 
 mkdir -p "$build" "$facades"
 mcs=(mcs -sdk:4.8-api -langversion:7.2 -warnaserror+ -nologo -target:library)
