@@ -132,6 +132,7 @@ namespace Lamella.Tests
             CollectionAssert.AreEqual(new byte[] { 255, 102, 0 }, FabricationTable.UtilisationRgb(1.0));
             CollectionAssert.AreEqual(new byte[] { 217, 0, 26 }, FabricationTable.UtilisationRgb(1.2));
             CollectionAssert.AreEqual(new byte[] { 217, 0, 26 }, FabricationTable.UtilisationRgb(double.NaN));
+            Assert.AreEqual(unchecked((int)0xFFFF6600u), FabricationTable.UtilisationArgb(1.0));
         }
     }
 }

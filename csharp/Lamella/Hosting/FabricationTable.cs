@@ -55,6 +55,13 @@ namespace Lamella.Hosting
             return new[] { Byte(rgb[0]), Byte(rgb[1]), Byte(rgb[2]) };
         }
 
+        /// <summary><see cref="UtilisationRgb"/> as an opaque ARGB integer (for vertex colours).</summary>
+        public static int UtilisationArgb(double utilisation)
+        {
+            byte[] rgb = UtilisationRgb(utilisation);
+            return unchecked((int)0xFF000000u) | rgb[0] << 16 | rgb[1] << 8 | rgb[2];
+        }
+
         private static byte Byte(double c) => (byte)Math.Round(255.0 * c, MidpointRounding.AwayFromZero);
 
         /// <summary>Writes cut.dxf, cut.svg and bom.csv into <paramref name="folder"/> (created if missing); returns their paths.</summary>
