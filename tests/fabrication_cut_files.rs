@@ -15,8 +15,11 @@ fn plan() -> FabricationPlan {
     plan_fabrication(&helix_pattern(), &timber_params()).expect("valid plan")
 }
 
-/// Polylines per layer as read by the `dxf` crate: (layer, closed, points).
-fn dxf_polylines(text: &str) -> (Vec<(String, bool, Vec<[f64; 2]>)>, Drawing) {
+/// A polyline of the drawing: its layer, whether it is closed, its points (mm).
+type Polyline = (String, bool, Vec<[f64; 2]>);
+
+/// Polylines as read by the `dxf` crate, and the drawing.
+fn dxf_polylines(text: &str) -> (Vec<Polyline>, Drawing) {
     let drawing = Drawing::load(&mut text.as_bytes()).expect("the DXF parses");
     let polylines = drawing
         .entities()

@@ -185,8 +185,9 @@ pub struct DesignArgs {
     pub start: StartFlags,
     #[command(flatten)]
     pub strips: StripFlags,
+    /// Boxed: the workshop flags are rarely given and would make every command large.
     #[command(flatten)]
-    pub fabrication: FabricationFlags,
+    pub fabrication: Box<FabricationFlags>,
     #[command(flatten)]
     pub out: OutArgs,
     #[command(flatten)]
