@@ -478,7 +478,8 @@ static void coarse_stand_in(const LmlMesh *small)
     LmlField *field = NULL;
     LmlFieldParams params;
     LmlCandidate candidate;
-    size_t proxy = 99, needed = 0;
+    size_t proxy = 99, needed = 0, count = 0;
+    LmlStatus status;
 
     CHECK_STATUS(lml_field_params_default(LML_FAMILY_PSEUDO_GEODESIC, 60.0, &params), LML_STATUS_OK);
     CHECK_STATUS(lml_search_new(small, &params, &search), LML_STATUS_OK);
@@ -502,10 +503,16 @@ static void coarse_stand_in(const LmlMesh *small)
         printf("  search on %lu vertices probes a %lu-vertex coarsening\n", (unsigned long)fine.vertex_count,
                (unsigned long)proxy);
         CHECK(proxy >= 2500 && proxy <= 3000 && proxy < fine.vertex_count);
-        /* One probe, then its field is carried to every vertex of the full mesh. */
-        CHECK_STATUS(lml_search_step(search), LML_STATUS_MORE);
-        CHECK_STATUS(lml_search_candidate(search, 0, &candidate), LML_STATUS_OK);
+        /* Probes until one candidate is scored (the heights across the axis are the rulings, rejected
+         * unsolved), then its field is carried to every vertex of the full mesh. */
+        do {
+            status = lml_search_step(search);
+            CHECK_STATUS(lml_search_candidate_count(search, &count), LML_STATUS_OK);
+            CHECK_STATUS(lml_search_candidate(search, count - 1, &candidate), LML_STATUS_OK);
+        } while (status == LML_STATUS_MORE && !candidate.scored);
         CHECK(candidate.scored == 1 && candidate.rms_error_degrees < 45.0);
+        printf("  the first scored candidate (%lu probed): RMS %.2f deg along its level curves\n", (unsigned long)count,
+               candidate.rms_error_degrees);
         CHECK_STATUS(lml_search_field(search, &field), LML_STATUS_OK);
         /* The count stays readable after the field was taken. */
         CHECK_STATUS(lml_search_proxy_vertex_count(search, &needed), LML_STATUS_OK);
