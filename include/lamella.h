@@ -113,6 +113,19 @@
 // show it; equal to the library's limit.)
 #define LML_MAX_STARTS 10000
 
+// `lml_fabrication_text` kind: the id of piece `index` (`strip_<i>-<k>`).
+#define LML_FABRICATION_TEXT_PIECE_ID 0
+
+// `lml_fabrication_text` kind: cut.dxf, R12 ASCII DXF in millimetres (layers OUTLINE, LABEL,
+// MARKS, CENTRELINE, STOCK).
+#define LML_FABRICATION_TEXT_CUT_DXF 1
+
+// `lml_fabrication_text` kind: cut.svg, the same drawing as SVG in millimetres.
+#define LML_FABRICATION_TEXT_CUT_SVG 2
+
+// `lml_fabrication_text` kind: bom.csv, the bill of materials.
+#define LML_FABRICATION_TEXT_BOM_CSV 3
+
 // Result of an `lml_*` call. `LML_STATUS_OK`, `LML_STATUS_MORE`, `LML_STATUS_CONVERGED` and
 // `LML_STATUS_NO_ACCEPTABLE_FAMILY` are successes (≥ 0: the outputs are valid); every failure
 // is negative, and `lml_last_error_message()` then says what went wrong and names the
@@ -175,6 +188,10 @@ typedef int32_t LmlStatus;
 // a closed flag, together with the surface they lie on. Create it with `lml_curves_new` or
 // `lml_curves_new_uniform`, release it with `lml_curves_free`. Immutable once created.
 typedef struct LmlCurves LmlCurves;
+
+// A fabrication plan (opaque), created by `lml_fabrication_new`, released with
+// `lml_fabrication_free`. Immutable; it keeps no reference to the strips.
+typedef struct LmlFabrication LmlFabrication;
 
 // A field optimisation session (opaque): a copy of the mesh, the scalar field, the auxiliary
 // variables and the solver state. Create it with `lml_field_new` or `lml_field_load`, release
@@ -470,6 +487,98 @@ typedef struct LmlCrossing {
   // The meeting point (x, y, z).
   double position[3];
 } LmlCrossing;
+
+// A strip material in pascals: each finite and > 0. Fill it with `lml_material_preset` or by hand.
+typedef struct LmlMaterial {
+  // Young's modulus E, Pa.
+  double youngs_modulus;
+  // Shear modulus G, Pa.
+  double shear_modulus;
+  // Allowable stress, compared with the von Mises stress of bending and torsion, Pa.
+  double allowable_stress;
+} LmlMaterial;
+
+// The stock boards or sheets, in the strips' unit (metres).
+typedef struct LmlStock {
+  // Length of a board, finite, > 2 × `overlap`.
+  double length;
+  // Width of a board; 0: as wide as the widest piece (one row of pieces per board).
+  double width;
+  // Splice overlap between consecutive pieces of a strip, finite, ≥ 0. Default 0.3.
+  double overlap;
+  // Gap between pieces on a board, finite, ≥ 0. Default 0.01.
+  double gap;
+} LmlStock;
+
+// Totals of a plan.
+typedef struct LmlFabricationSummary {
+  uint64_t strips;
+  uint64_t pieces;
+  uint64_t boards;
+  // Size of a board (the width resolved when `LmlStock::width` was 0).
+  double board_size[2];
+  // The pieces' area over the boards'.
+  double material_yield;
+  // Number of strips over 100 % utilisation.
+  uint64_t overstressed_strips;
+} LmlFabricationSummary;
+
+// The bending and twisting check of one strip (weak-axis stress E t κ / 2 from the centre
+// line's curvature, torsional shear G t τ from the twist rate of its rectifying frame,
+// utilisation √(σ² + 3 τ²) / allowable stress).
+typedef struct LmlStripCheck {
+  // Largest bending strain t κ / 2.
+  double max_strain;
+  // Largest bending stress, Pa.
+  double max_bending_stress;
+  // Largest torsional shear stress, Pa.
+  double max_shear_stress;
+  // Largest utilisation (1 = the allowable stress).
+  double max_utilisation;
+  // Centre point of the largest utilisation (index within the strip).
+  uint64_t worst_point;
+  // Its arc length along the centre line.
+  double worst_arc_length;
+  // Its position in space.
+  double worst_position[3];
+  // Smallest bending radius; 0 for a straight strip.
+  double min_bending_radius;
+  // Largest twist rate, rad per unit length.
+  double max_twist_rate;
+  // 1 when the utilisation exceeds 1 somewhere.
+  uint32_t overstressed;
+} LmlStripCheck;
+
+// One piece of the plan (a row of the bill of materials). Its id is
+// `strip_<strip>-<number>` (`lml_fabrication_piece_id`).
+typedef struct LmlPiece {
+  // Index of its strip.
+  uint64_t strip;
+  // Its number along the strip, from 1.
+  uint64_t number;
+  // Arc lengths of its ends along the strip's centre line.
+  double start;
+  double end;
+  // Centre-line length (`end − start`).
+  double length;
+  double width;
+  // Smallest bending radius within the piece; 0 when straight.
+  double min_bending_radius;
+  // Largest twist rate within the piece.
+  double max_twist_rate;
+  // Largest utilisation within the piece.
+  double max_utilisation;
+  // Index of the piece spliced before it, −1 for none.
+  int64_t previous;
+  // Index of the piece spliced after it, −1 for none.
+  int64_t next;
+  // Board number, from 1.
+  uint64_t board;
+  // Lower-left corner of its bounding box on the board.
+  double position[2];
+  // Size of its bounding box (along the board, across).
+  double size[2];
+} LmlPiece;
 
 // Pseudo-geodesics: the binormal keeps the angle `theta_degrees` to the surface normal
 // (`E_angle`, paper Eq. 8–10).
@@ -1332,6 +1441,68 @@ LmlStatus lml_field_values_from_strokes(const struct LmlMesh *mesh,
                                         size_t capacity,
                                         size_t *needed,
                                         double *theta_degrees);
+
+// Fills `*out` with a preset material by name: "timber" (C24: E 11 GPa, G 0.69 GPa, 24 MPa),
+// "plywood" (birch: 9.5 GPa, 0.62 GPa, 30 MPa), "steel" (S355: 210 GPa, 81 GPa, 355 MPa) or
+// "aluminium" (6082 T6: 70 GPa, 27 GPa, 250 MPa); characteristic values without safety factors.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument, unknown name).
+LmlStatus lml_material_preset(const char *name, struct LmlMaterial *out);
+
+// Fills `*out` with boards of `length` (width 0: as wide as the widest piece), overlap 0.3, gap 0.01.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL `out`).
+LmlStatus lml_stock_default(double length,
+                            struct LmlStock *out);
+
+// Checks and cuts the strips of `strips` (named `strip_<i>`, as in the CLI's files) in
+// `material` of `thickness`, from `stock`.
+//
+// Returns `LML_STATUS_OK` (also when strips are over 100 % utilisation: see `overstressed`),
+// or `LML_STATUS_INVALID_ARGUMENT` (NULL pointer; a material constant, the thickness or a stock
+// size not finite or out of range, the stock not longer than two overlaps, a piece that does
+// not fit the stock, no strips: the message names it). `*out` is NULL on failure.
+LmlStatus lml_fabrication_new(const struct LmlStrips *strips,
+                              const struct LmlMaterial *material,
+                              double thickness,
+                              const struct LmlStock *stock,
+                              struct LmlFabrication **out);
+
+// Releases a plan. NULL is accepted and ignored.
+void lml_fabrication_free(struct LmlFabrication *fabrication);
+
+// Writes the plan's totals to `*summary`.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_fabrication_summary(const struct LmlFabrication *fabrication,
+                                  struct LmlFabricationSummary *summary);
+
+// Copies one check per strip (in strip order). Two-call pattern: `*needed` is always set to
+// the strip count; if `out` is NULL or `capacity` smaller, nothing is copied and
+// `LML_STATUS_BUFFER_TOO_SMALL` is returned.
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_fabrication_strip_checks(const struct LmlFabrication *fabrication,
+                                       struct LmlStripCheck *out,
+                                       size_t capacity,
+                                       size_t *needed);
+
+// Copies the pieces, strip by strip and along each strip (the bill of materials). Two-call
+// pattern as `lml_fabrication_strip_checks`.
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_fabrication_pieces(const struct LmlFabrication *fabrication,
+                                 struct LmlPiece *out,
+                                 size_t capacity,
+                                 size_t *needed);
+
+// Writes a text output of the plan as UTF-8 with a terminating NUL, two-call pattern:
+// `*needed` receives the byte count including the NUL; if `text` is NULL or `capacity`
+// smaller, nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned. `index` selects the
+// piece for `LML_FABRICATION_TEXT_PIECE_ID` and is ignored otherwise.
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`
+// (NULL argument, piece index out of range, unknown `kind`).
+LmlStatus lml_fabrication_text(const struct LmlFabrication *fabrication,
+                               uint32_t kind,
+                               size_t index,
+                               uint8_t *text,
+                               size_t capacity,
+                               size_t *needed);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -5,10 +5,11 @@
 //! the sparse Levenberg–Marquardt [`solver`] from an [`initialisation`] (guide curves or
 //! sketched strokes, and the automatic design);
 //! its level [`curves`]; the rectifying developable [`strips`] along them with their flat
-//! unrollings; the outside reviewer's measures of the results in [`quality`]; the C ABI in
+//! unrollings; what a workshop needs to make them in [`fabrication`]; the outside reviewer's measures of the results in [`quality`]; the C ABI in
 //! [`ffi`]; procedural [`surfaces`] for tests and the demo; [`input`]: the size limit of input
 //! files and the bounds on text quoted in error messages.
 pub mod curves;
+pub mod fabrication;
 pub mod ffi;
 pub mod field;
 pub mod initialisation;

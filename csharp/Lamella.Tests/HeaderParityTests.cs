@@ -34,6 +34,11 @@ namespace Lamella.Tests
             { "LmlCrossing", typeof(Crossing) },
             { "LmlCandidate", typeof(CandidateRecord) },
             { "LmlVerdict", typeof(VerdictRecord) },
+            { "LmlMaterial", typeof(Material) },
+            { "LmlStock", typeof(Stock) },
+            { "LmlStripCheck", typeof(StripCheck) },
+            { "LmlPiece", typeof(Piece) },
+            { "LmlFabricationSummary", typeof(FabricationSummary) },
         };
 
         /// <summary>Integer typedefs of the header and the managed enum each is carried by (also in arrays).</summary>
@@ -149,7 +154,7 @@ namespace Lamella.Tests
             {
                 case "uint8_t": return new Layout(1, 1);
                 case "int32_t": case "uint32_t": case "LmlStatus": case "LmlFamily": case "LmlTraceStop": return new Layout(4, 4);
-                case "uint64_t": case "double": case "LmlStripWarnings": return new Layout(8, 8);
+                case "int64_t": case "uint64_t": case "double": case "LmlStripWarnings": return new Layout(8, 8);
                 case "size_t": return new Layout(IntPtr.Size, IntPtr.Size);
             }
             string name = type.StartsWith("struct ", StringComparison.Ordinal) ? type.Substring(7) : type;
@@ -210,6 +215,7 @@ namespace Lamella.Tests
             AssertEnumMatches(typeof(StripWarnings), warnings);
             AssertEnumMatches(typeof(TraceStop), Header.ConstantsPascal("LML_TRACE_STOP_"));
             AssertEnumMatches(typeof(StartKind), Header.ConstantsPascal("LML_START_"));
+            AssertEnumMatches(typeof(FabricationText), Header.ConstantsPascal("LML_FABRICATION_TEXT_"));
             Assert.AreEqual(Header.FloatConstants()["LML_DEFAULT_CORNER_TURN_DEGREES"], BoundaryStarts.DefaultCornerTurnDegrees);
             Assert.AreEqual(Header.Constants()["LML_ABI_VERSION"], (long)Library.BindingAbiVersion);
         }

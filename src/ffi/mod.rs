@@ -46,10 +46,12 @@ mod trace_options;
 mod boundary_starts;
 mod guides;
 mod initial_fields;
+mod fabrication;
 
 pub use boundary_starts::*;
 pub use curves::*;
 pub use edge_point::*;
+pub use fabrication::*;
 pub use field::*;
 pub use field_params::*;
 pub use guides::*;
@@ -81,5 +83,6 @@ mod tests {
         movable::<LmlCurves>();
         movable::<LmlStrips>();
         movable::<LmlGuides>();
+        movable::<LmlFabrication>();
     }
 }

@@ -11,6 +11,7 @@ int main(int argc, char **argv)
     const char *scratch = argc > 1 ? argv[1] : ".";
     Cylinder cylinder, small;
     LmlField *field;
+    LmlCurves *curves;
 
     /* 26 x 15 cells: about 1 length unit each, 432 vertices (small enough for valgrind). */
     /* The search probes a dozen starts with real solves: 16 x 10 cells, 187 vertices. */
@@ -29,7 +30,9 @@ int main(int argc, char **argv)
     if (field != NULL) {
         test_session(field);
         /* The rest of the pipeline: field -> curves -> strips -> unrolled strips. */
-        test_strips(field, test_curves(field, &cylinder));
+        curves = test_curves(field, &cylinder);
+        test_fabrication(curves);
+        test_strips(field, curves);
     }
     lml_field_free(field);
     cylinder_free(&cylinder);

@@ -37,5 +37,9 @@ void test_search(const Cylinder *cylinder);
  * normals, crossings and the order check, initial fields from guides (then solved) and from
  * strokes along them, and every invalid input. */
 void test_guides(const Cylinder *cylinder);
+/* The workshop plan of strips on `curves` (not taken over): material presets, stock, every
+ * invalid input, the strain of each strip against an independent curvature computation, pieces
+ * covering their strips with the overlaps, the DXF's layers, piece ids and the bill of materials. */
+void test_fabrication(const LmlCurves *curves);
 
 #endif

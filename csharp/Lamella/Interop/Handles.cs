@@ -47,4 +47,10 @@ namespace Lamella.Interop
         public GuidesHandle() { }
         protected override bool ReleaseHandle() { NativeMethods.lml_guides_free(handle); return true; }
     }
+
+    internal sealed class FabricationHandle : LamellaHandle
+    {
+        public FabricationHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_fabrication_free(handle); return true; }
+    }
 }

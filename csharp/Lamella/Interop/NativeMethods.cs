@@ -168,5 +168,22 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_field_values_from_strokes(MeshHandle mesh, double[] points, UIntPtr pointCount, UIntPtr[] offsets, UIntPtr strokeCount,
             [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed, out double thetaDegrees);
+
+        // LmlFabrication.
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_material_preset(byte[] utf8Name, out Material material);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_stock_default(double length, out Stock stock);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_fabrication_new(StripsHandle strips, [In] ref Material material, double thickness, [In] ref Stock stock,
+            out FabricationHandle fabrication);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_fabrication_free(IntPtr fabrication);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_fabrication_summary(FabricationHandle fabrication, out FabricationSummary summary);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_fabrication_strip_checks(FabricationHandle fabrication, [Out] StripCheck[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_fabrication_pieces(FabricationHandle fabrication, [Out] Piece[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_fabrication_text(FabricationHandle fabrication, uint kind, UIntPtr index, [Out] byte[] buffer, UIntPtr capacity,
+            out UIntPtr needed);
     }
 }

@@ -147,6 +147,7 @@ namespace Grasshopper.Kernel
             public int AddNumberParameter(string name, string nickname, string description, GH_ParamAccess access, double @default) { throw new NotSupportedException("facade"); }
             public int AddIntegerParameter(string name, string nickname, string description, GH_ParamAccess access, int @default) { throw new NotSupportedException("facade"); }
             public int AddBooleanParameter(string name, string nickname, string description, GH_ParamAccess access, bool @default) { throw new NotSupportedException("facade"); }
+            public int AddTextParameter(string name, string nickname, string description, GH_ParamAccess access, string @default) { throw new NotSupportedException("facade"); }
             public int AddVectorParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }
             public int AddVectorParameter(string name, string nickname, string description, GH_ParamAccess access, Rhino.Geometry.Vector3d @default) { throw new NotSupportedException("facade"); }
             public int AddPointParameter(string name, string nickname, string description, GH_ParamAccess access) { throw new NotSupportedException("facade"); }

@@ -37,6 +37,11 @@ pub enum Command {
     Unroll(UnrollArgs),
     /// Table 4 quality measures of the strips in a strips.obj.
     Metrics(MetricsArgs),
+    /// Workshop files for the strips in a strips.obj: the bending and twisting check of each
+    /// strip for a material and thickness, strips longer than the stock split at splices, the
+    /// pieces laid out on stock boards. Writes cut.dxf, cut.svg, bom.csv, utilisation.svg,
+    /// report.json.
+    Fabricate(FabricateArgs),
 }
 
 /// Progress and summary output.
@@ -180,6 +185,9 @@ pub struct DesignArgs {
     pub start: StartFlags,
     #[command(flatten)]
     pub strips: StripFlags,
+    /// Boxed: the workshop flags are rarely given and would make every command large.
+    #[command(flatten)]
+    pub fabrication: Box<FabricationFlags>,
     #[command(flatten)]
     pub out: OutArgs,
     #[command(flatten)]
@@ -280,6 +288,55 @@ pub struct MetricsArgs {
     /// Print JSON instead of a table.
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub verbosity: VerbosityArgs,
+}
+
+/// Material, thickness and stock of the strips (`fabricate`, and `design` when --thickness is given).
+#[derive(Args, Debug, Clone, Default)]
+pub struct FabricationFlags {
+    /// Strip material: timber (C24), plywood (birch), steel (S355) or aluminium (6082 T6), or
+    /// custom with --youngs-modulus, --shear-modulus and --allowable-stress [default: timber].
+    #[arg(long, value_name = "NAME")]
+    pub material: Option<String>,
+    /// Strip thickness, a length such as 6mm (metres without a unit), > 0; `design` writes the
+    /// workshop files only when it is given [default: none].
+    #[arg(long, value_name = "LENGTH", allow_hyphen_values = true)]
+    pub thickness: Option<String>,
+    /// Length of the stock boards or sheets, such as 4.8m, longer than twice the overlap
+    /// [default: 4.8m].
+    #[arg(long, value_name = "LENGTH", allow_hyphen_values = true)]
+    pub stock: Option<String>,
+    /// Width of the stock sheets, such as 1.25m [default: as wide as the widest piece, one row per board].
+    #[arg(long, value_name = "LENGTH", allow_hyphen_values = true)]
+    pub stock_width: Option<String>,
+    /// Splice overlap between consecutive pieces of a strip, such as 300mm [default: 0.3m].
+    #[arg(long, value_name = "LENGTH", allow_hyphen_values = true)]
+    pub overlap: Option<String>,
+    /// Young's modulus, such as 11GPa, replacing the material's [default: the material's].
+    #[arg(long, value_name = "STRESS", allow_hyphen_values = true)]
+    pub youngs_modulus: Option<String>,
+    /// Shear modulus, such as 0.69GPa, replacing the material's [default: the material's].
+    #[arg(long, value_name = "STRESS", allow_hyphen_values = true)]
+    pub shear_modulus: Option<String>,
+    /// Allowable stress (compared with the von Mises stress of bending and torsion), such as
+    /// 24MPa, replacing the material's [default: the material's characteristic strength].
+    #[arg(long, value_name = "STRESS", allow_hyphen_values = true)]
+    pub allowable_stress: Option<String>,
+}
+
+#[derive(Args, Debug, Clone, Default)]
+pub struct FabricateArgs {
+    /// The strips (strips.obj of `strips` or `design`).
+    #[arg(long = "strips", value_name = "strips.obj")]
+    pub strips_obj: PathBuf,
+    /// θ of the strips' family in degrees, for the bill of materials [default: unknown, left empty].
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
+    pub theta: Option<f64>,
+    #[command(flatten)]
+    pub fabrication: FabricationFlags,
+    #[command(flatten)]
+    pub out: OutArgs,
     #[command(flatten)]
     pub verbosity: VerbosityArgs,
 }

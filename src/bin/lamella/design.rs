@@ -5,6 +5,7 @@ use crate::args::DesignArgs;
 use crate::config::{Flags, Settings};
 use crate::console::err_line;
 use crate::error::{CliError, CliResult};
+use crate::fabrication_files::{self, cli_error, overstress_warning, report_section, summary_line};
 use crate::field_cmd::{family_measure, field_summary, optimise, write_field_files};
 use crate::field_files::HistoryRow;
 use crate::mesh_input::{load_mesh, mesh_name};
@@ -15,6 +16,7 @@ use crate::start_field::start_solver;
 use crate::strip_obj::strip_name;
 use crate::strips_cmd::{build_strips, strips_summary, warning_lines, write_strip_files, StripRun};
 use crate::svg::cut_sheet::{cut_sheet_svg, CutPiece};
+use lamella::fabrication::{plan_fabrication, FabricationStrip};
 use std::time::Instant;
 
 pub fn run(args: &DesignArgs) -> CliResult<()> {
@@ -29,6 +31,8 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
         config: Some(&args.config),
         start: Some(&args.start),
     })?;
+    // The workshop files' parameters are checked before the long computation.
+    let fabrication = fabrication_files::requested(&args.fabrication).then(|| fabrication_files::params(&args.fabrication, Some(settings.theta))).transpose()?;
     let mesh = load_mesh(settings.mesh.as_deref())?;
     let name = mesh_name(settings.mesh.as_deref());
     let out = OutputDir::create(&settings.out, settings.force)?;
@@ -59,15 +63,37 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     let pieces: Vec<CutPiece> =
         run.pattern.strips.iter().enumerate().map(|(id, s)| CutPiece { name: strip_name(id), unrolling: &s.unrolling }).collect();
     out.write("unrolled.svg", cut_sheet_svg(&pieces))?;
+    let plan = match fabrication {
+        Some(mut params) => {
+            params.theta_degrees = Some(theta);
+            let strips: Vec<FabricationStrip> = run.pattern.strips.iter().enumerate().map(|(id, s)| FabricationStrip::from_rectifying(&strip_name(id), s)).collect();
+            let plan = plan_fabrication(&strips, &params).map_err(cli_error)?;
+            let boundaries: Vec<(&[_], &[_])> = run.pattern.strips.iter().map(|s| (s.left.as_slice(), s.right.as_slice())).collect();
+            fabrication_files::write_files(&out, &plan, &boundaries, Some(&mesh))?;
+            Some(plan)
+        }
+        None => None,
+    };
     let timings = Timings { field: field_seconds, strips: strips_seconds, total: started.elapsed().as_secs_f64() };
     let parameters = report_json::parameters(&settings, theta, &name, Some(&start.description));
-    out.write("report.json", report_json::document(&parameters, Some((&solver, &history, &measure)), Some(&run), &timings))?;
+    let mut report = report_json::document_value(&parameters, Some((&solver, &history, &measure)), Some(&run), &timings);
+    if let (Some(plan), Some(root)) = (&plan, report.as_object_mut()) {
+        root.insert("fabrication".into(), report_section(plan));
+    }
+    out.write("report.json", report_json::pretty(&report))?;
     let target = out.target().display().to_string();
     out.commit()?;
+    if let Some(warning) = plan.as_ref().and_then(overstress_warning) {
+        if verbosity != Verbosity::Quiet {
+            err_line(format!("lamella: warning: {warning}"));
+        }
+    }
+    let workshop = plan.as_ref().map_or(String::new(), |p| format!("{}\n", summary_line(p)));
+    let workshop_files = if plan.is_some() { format!(", {}", fabrication_files::FILES) } else { String::new() };
     summary(
         verbosity,
         &format!(
-            "{}\n{}\ndone in {:.1} s (field {field_seconds:.1} s, strips {strips_seconds:.1} s); wrote {target}/ (surface.obj, field.csv, session.bin, energies.csv, curves.obj, strips.obj, rulings.obj, report.json, unrolled.svg, convergence.svg, preview.svg)",
+            "{}\n{}\n{workshop}done in {:.1} s (field {field_seconds:.1} s, strips {strips_seconds:.1} s); wrote {target}/ (surface.obj, field.csv, session.bin, energies.csv, curves.obj, strips.obj, rulings.obj, report.json, unrolled.svg, convergence.svg, preview.svg{workshop_files})",
             field_summary(&solver, &measure),
             strips_summary(&run),
             started.elapsed().as_secs_f64()

@@ -9,6 +9,8 @@ mod config;
 mod console;
 mod design;
 mod error;
+mod fabricate;
+mod fabrication_files;
 mod field_cmd;
 mod field_files;
 mod guides;
@@ -24,6 +26,7 @@ mod strips_cmd;
 mod strokes_file;
 mod svg;
 mod trace_cmd;
+mod units;
 mod unroll;
 
 use args::{Cli, Command};
@@ -59,5 +62,6 @@ fn run(cli: &Cli) -> CliResult<()> {
         Some(Command::Strips(args)) => strips_cmd::run(args),
         Some(Command::Unroll(args)) => unroll::run(args),
         Some(Command::Metrics(args)) => metrics::run(args),
+        Some(Command::Fabricate(args)) => fabricate::run(args),
     }
 }

@@ -124,6 +124,17 @@ fn strips_section(run: &StripRun) -> Value {
 
 /// The whole report, pretty-printed.
 pub fn document(parameters: &Value, field: Option<(&FieldSolver, &[HistoryRow], &FamilyAngles)>, strips: Option<&StripRun>, timings: &Timings) -> String {
+    pretty(&document_value(parameters, field, strips, timings))
+}
+
+/// A report pretty-printed, with a final line break.
+pub fn pretty(report: &Value) -> String {
+    // Serialising a Value cannot fail; fall back to the empty string regardless.
+    serde_json::to_string_pretty(report).unwrap_or_default() + "\n"
+}
+
+/// The whole report.
+pub fn document_value(parameters: &Value, field: Option<(&FieldSolver, &[HistoryRow], &FamilyAngles)>, strips: Option<&StripRun>, timings: &Timings) -> Value {
     let mut root = Map::new();
     root.insert("lamella_version".into(), json!(env!("CARGO_PKG_VERSION")));
     root.insert("parameters".into(), parameters.clone());
@@ -137,6 +148,5 @@ pub fn document(parameters: &Value, field: Option<(&FieldSolver, &[HistoryRow], 
         "timings_s".into(),
         json!({ "field": timings.field, "strips": timings.strips, "total": timings.total }),
     );
-    // Serialising a Value cannot fail; fall back to the compact form regardless.
-    serde_json::to_string_pretty(&Value::Object(root)).unwrap_or_default() + "\n"
+    Value::Object(root)
 }

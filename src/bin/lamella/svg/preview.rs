@@ -71,20 +71,41 @@ struct Facet {
     lift: f64,
 }
 
+/// One strip to draw: its boundaries and the colour of each quad.
+pub struct ColouredStrip<'a> {
+    pub left: &'a [Vec3],
+    pub right: &'a [Vec3],
+    /// One colour per quad `(left_j, left_{j+1}, right_{j+1}, right_j)`.
+    pub quad_rgb: Vec<[f64; 3]>,
+}
+
 /// The preview image of `mesh` with `pattern`.
 pub fn preview_svg(mesh: &TriMesh, pattern: &StripPattern) -> String {
+    let strips: Vec<ColouredStrip> = pattern
+        .strips
+        .iter()
+        .enumerate()
+        .map(|(id, s)| ColouredStrip { left: &s.left, right: &s.right, quad_rgb: vec![strip_rgb(id); s.left.len().saturating_sub(1)] })
+        .collect();
+    strips_view_svg(Some(mesh), &strips, "lamella preview: surface and strips")
+}
+
+/// The shaded view of `strips` (each quad in its colour) over the surface `mesh`, if given.
+pub fn strips_view_svg(mesh: Option<&TriMesh>, strips: &[ColouredStrip], title: &str) -> String {
     let camera = Camera::default_view();
     let mut facets: Vec<Facet> = Vec::new();
-    for (f, face) in mesh.faces().iter().enumerate() {
-        let corners: Vec<Vec3> = face.iter().map(|&v| mesh.positions()[v as usize]).collect();
-        let fill = camera.shade(SURFACE_RGB, &mesh.face_normals()[f]);
-        facets.push(Facet { depth: 0.0, lift: 0.0, stroke: fill.clone(), fill, corners });
+    if let Some(mesh) = mesh {
+        for (f, face) in mesh.faces().iter().enumerate() {
+            let corners: Vec<Vec3> = face.iter().map(|&v| mesh.positions()[v as usize]).collect();
+            let fill = camera.shade(SURFACE_RGB, &mesh.face_normals()[f]);
+            facets.push(Facet { depth: 0.0, lift: 0.0, stroke: fill.clone(), fill, corners });
+        }
     }
-    for (id, strip) in pattern.strips.iter().enumerate() {
-        for j in 0..strip.left.len().min(strip.right.len()).saturating_sub(1) {
+    for strip in strips {
+        for (j, rgb) in strip.quad_rgb.iter().enumerate().take(strip.left.len().min(strip.right.len()).saturating_sub(1)) {
             let corners = vec![strip.left[j], strip.left[j + 1], strip.right[j + 1], strip.right[j]];
             let normal = (corners[1] - corners[3]).cross(&(corners[2] - corners[0]));
-            let fill = camera.shade(strip_rgb(id), &normal);
+            let fill = camera.shade(*rgb, &normal);
             let lift = (strip.left[j] - strip.right[j]).norm();
             facets.push(Facet { depth: 0.0, lift, stroke: "#333".into(), fill, corners });
         }
@@ -107,7 +128,7 @@ pub fn preview_svg(mesh: &TriMesh, pattern: &StripPattern) -> String {
     let scale = if low[0].is_finite() { (IMAGE_WIDTH - 2.0 * MARGIN) / extent[0] } else { 1.0 };
     let height = if low[0].is_finite() { extent[1] * scale + 2.0 * MARGIN } else { 2.0 * MARGIN };
     let to_screen = |p: &[f64; 2]| [MARGIN + (p[0] - low[0]) * scale, MARGIN + (high[1] - p[1]) * scale];
-    let mut svg = Svg::new(IMAGE_WIDTH, height, "", "lamella preview: surface and strips");
+    let mut svg = Svg::new(IMAGE_WIDTH, height, "", title);
     svg.element(&format!("<rect width=\"{}\" height=\"{}\" fill=\"#fff\"/>", super::num(IMAGE_WIDTH), super::num(height)));
     svg.element("<g stroke-width=\"0.4\" stroke-linejoin=\"round\">");
     for (facet, corners) in facets.iter().zip(&projected) {
