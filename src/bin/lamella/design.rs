@@ -57,7 +57,7 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     write_field_files(&out, &solver, &history)?;
     write_strip_files(&out, &mesh, &run)?;
     let pieces: Vec<CutPiece> =
-        run.pattern.strips.iter().enumerate().map(|(id, s)| CutPiece { name: strip_name(id), unrolling: &s.unrolling }).collect();
+        run.pattern.strips.iter().enumerate().map(|(id, s)| CutPiece { name: strip_name(id), unrolling: &s.unrolling, marks: Vec::new() }).collect();
     out.write("unrolled.svg", cut_sheet_svg(&pieces))?;
     let timings = Timings { field: field_seconds, strips: strips_seconds, total: started.elapsed().as_secs_f64() };
     let parameters = report_json::parameters(&settings, theta, &name, Some(&start.description));

@@ -15,6 +15,7 @@ mod guides;
 mod info;
 mod mesh_input;
 mod metrics;
+mod net_cmd;
 mod output_dir;
 mod progress;
 mod report_json;
@@ -59,5 +60,6 @@ fn run(cli: &Cli) -> CliResult<()> {
         Some(Command::Strips(args)) => strips_cmd::run(args),
         Some(Command::Unroll(args)) => unroll::run(args),
         Some(Command::Metrics(args)) => metrics::run(args),
+        Some(Command::Net(args)) => net_cmd::run(args),
     }
 }
