@@ -9,7 +9,7 @@
 //! |---|---|---|
 //! | 0 | `g_F · g_G − cos γ` | target angle, weak (weight 0 without a target) |
 //! | 1 | `g_F · g_G^⊥ − sin γ` | target angle, weak |
-//! | 2 | `max(0, sin γ_min − \|g_F · g_G^⊥\|)` | minimum intersection angle: the families never become tangent |
+//! | 2 | `max(0, sin² γ_min − (g_F · g_G^⊥)²)` | minimum intersection angle: the families never become tangent (squared sines: smooth where they are tangent) |
 //!
 //! The unsigned intersection angle of the two curve families is `asin |g_F · g_G^⊥|` in
 //! `[0°, 90°]`. The derivatives are exact (the norms are not frozen):
@@ -90,7 +90,7 @@ pub(crate) fn evaluate(mesh: &TriMesh, term: &IntersectionTerm, f_field: &[f64],
     let area = mesh.face_areas()[f];
     let target_scale = (term.target_weight * area).sqrt();
     let min_scale = (term.min_weight * area).sqrt();
-    let hinge = term.min_sine - sin.abs();
+    let hinge = term.min_sine * term.min_sine - sin * sin;
     residuals[0] = target_scale * (cos - term.target.0);
     residuals[1] = target_scale * (sin - term.target.1);
     residuals[2] = if hinge > 0.0 { min_scale * hinge } else { 0.0 };
@@ -101,7 +101,7 @@ pub(crate) fn evaluate(mesh: &TriMesh, term: &IntersectionTerm, f_field: &[f64],
     let rows: [(Vec3, Vec3, f64); 3] = [
         (project(&ga, &gb, na), project(&gb, &ga, nb), target_scale),
         (project(&ga, &gb_perp, na), project(&gb, &ga.cross(&n), nb), target_scale),
-        (project(&ga, &gb_perp, na), project(&gb, &ga.cross(&n), nb), if hinge > 0.0 { -min_scale * sin.signum() } else { 0.0 }),
+        (project(&ga, &gb_perp, na), project(&gb, &ga.cross(&n), nb), if hinge > 0.0 { -2.0 * min_scale * sin } else { 0.0 }),
     ];
     let gradients = mesh.face_gradients(f);
     for (row, (df, dg, scale)) in rows.iter().enumerate() {
@@ -133,7 +133,7 @@ mod tests {
             assert!((c * c + s * s - 1.0).abs() < 1e-12);
             let area = mesh.face_areas()[face];
             assert!((r[0] - (2.0 * area).sqrt() * (c - 0.5)).abs() < 1e-12);
-            assert!((r[2] - (3.0 * area).sqrt() * (1.0 - s.abs())).abs() < 1e-12);
+            assert!((r[2] - (3.0 * area).sqrt() * (1.0 - s * s)).abs() < 1e-12);
             let corners = mesh.faces()[face];
             for column in 0..6 {
                 let h = 1e-6;

@@ -18,7 +18,7 @@ pub struct NetParams {
     /// Weight of the target-angle rows. Default 1 (a weak term, as the authors advise).
     pub intersection_weight: f64,
     /// Minimum intersection angle in degrees, in [0°, 90°): faces where the families cross at a
-    /// smaller angle pay `max(0, sin γ_min − |sin γ|)²`. Default 30°.
+    /// smaller angle pay `max(0, sin² γ_min − sin² γ)²`. Default 30°.
     pub min_intersection_degrees: f64,
     /// Weight of the minimum-angle row. Default 10.
     pub min_intersection_weight: f64,

@@ -62,16 +62,16 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
     let started = Instant::now();
     let verbosity = Verbosity::from(args.verbosity);
     let families = parse_families(&args.families)?;
+    let mut params = NetParams::new(families[0], families[1]);
+    params.intersection_degrees = args.angle;
+    params.min_intersection_degrees = args.min_angle;
+    params.validate().map_err(|e| CliError::bad_input(format!("net: {e}")))?;
     let mesh = load_mesh(args.mesh.mesh.as_deref())?;
     let name = mesh_name(args.mesh.mesh.as_deref());
     let target: PathBuf = args.out.out.clone().unwrap_or_else(|| PathBuf::from(DEFAULT_OUT));
     let out = OutputDir::create(&target, args.out.force)?;
     let labels: Vec<String> = families.iter().map(family_label).collect();
     note(verbosity, &format!("{name}: {} vertices; net {}", mesh.vertex_count(), labels.join(", ")));
-    let mut params = NetParams::new(families[0], families[1]);
-    params.intersection_degrees = args.angle;
-    params.min_intersection_degrees = args.min_angle;
-    params.validate().map_err(|e| CliError::bad_input(format!("net: {e}")))?;
     let fields = lamella::net::net_start(&mesh, &params, &SearchOptions::default()).map_err(|e| CliError::bad_input(format!("start: {e}")))?;
     let mut solver = NetSolver::new(&mesh, &fields, params).map_err(|e| CliError::bad_input(format!("net: {e}")))?;
     while solver.iterations() < args.max_iterations && !solver.is_converged() {
