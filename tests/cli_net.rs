@@ -16,8 +16,11 @@ fn hypar_obj(dir: &Scratch) -> PathBuf {
     path
 }
 
+/// Vertex positions, faces and polylines (as 0-based index lists) of an OBJ text.
+type ObjElements = (Vec<[f64; 3]>, Vec<Vec<usize>>, Vec<Vec<usize>>);
+
 /// `v` lines, `f` lines (as index lists) and `l` lines of an OBJ text.
-fn obj_elements(text: &str) -> (Vec<[f64; 3]>, Vec<Vec<usize>>, Vec<Vec<usize>>) {
+fn obj_elements(text: &str) -> ObjElements {
     let (mut v, mut f, mut l) = (Vec::new(), Vec::new(), Vec::new());
     for line in text.lines() {
         let mut words = line.split_whitespace();

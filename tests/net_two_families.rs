@@ -104,8 +104,8 @@ fn a_pp_net_of_sixty_degrees_on_the_hall_roof_meets_both_angles_and_the_minimum_
     let nodes = net_nodes(&net, [&patterns[0], &patterns[1]], 2.0 * mesh.mean_edge_length());
     assert!(nodes.len() >= net.vertices.len() / 2, "{} nodes of {} crossings", nodes.len(), net.vertices.len());
     for node in &nodes {
-        for k in 0..2 {
-            let strip = &patterns[k].strips[node.strips[k]];
+        for (k, pattern) in patterns.iter().enumerate() {
+            let strip = &pattern.strips[node.strips[k]];
             assert!(node.arc_lengths[k] >= 0.0 && node.arc_lengths[k] <= strip.metrics.length + 1e-9, "{node:?}");
         }
         assert!((node.axis.norm() - 1.0).abs() < 1e-9 && (0.0..=90.0).contains(&node.ruling_angle_degrees), "{node:?}");
@@ -142,7 +142,7 @@ fn invalid_net_parameters_are_refused_by_name() {
     let error = NetSolver::new(&mesh, &[field.clone(), other.clone()], params).err().expect("refused");
     assert!(error.to_string().contains("intersection_degrees"), "{error}");
     let params = NetParams::new(Family::Asymptotic, Family::Asymptotic);
-    assert!(NetSolver::new(&mesh, &[field.clone()], params.clone()).is_err(), "one field for two families");
+    assert!(NetSolver::new(&mesh, std::slice::from_ref(&field), params.clone()).is_err(), "one field for two families");
     let mut short = other.clone();
     short.pop();
     assert!(NetSolver::new(&mesh, &[field, short], params).is_err(), "a short field");

@@ -169,10 +169,7 @@ impl NetSolver {
 
     fn enter_stage(&mut self, stage: usize) {
         let (stage, weights) = stage_weights(&self.params.field, stage);
-        self.stage = stage;
-        self.stage_iterations = 0;
-        self.slow_iterations = 0;
-        self.converged = false;
+        (self.stage, self.stage_iterations, self.slow_iterations, self.converged) = (stage, 0, 0, false);
         self.problem.set_weights(weights);
         self.lm.reset_damping();
     }
