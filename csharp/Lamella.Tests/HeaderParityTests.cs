@@ -34,6 +34,7 @@ namespace Lamella.Tests
             { "LmlCrossing", typeof(Crossing) },
             { "LmlCandidate", typeof(CandidateRecord) },
             { "LmlVerdict", typeof(VerdictRecord) },
+            { "LmlNetReport", typeof(NetReportRecord) },
         };
 
         /// <summary>Integer typedefs of the header and the managed enum each is carried by (also in arrays).</summary>

@@ -38,4 +38,7 @@ void test_search(const Cylinder *cylinder);
  * strokes along them, and every invalid input. */
 void test_guides(const Cylinder *cylinder);
 
+/* A net of two families (geodesic circles and rulings on the cylinder): every invalid input,
+ * stepping to convergence, both fields with the two-call pattern against the cylinder's axis. */
+void test_net(const Cylinder *cylinder);
 #endif

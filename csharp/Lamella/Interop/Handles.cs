@@ -47,4 +47,10 @@ namespace Lamella.Interop
         public GuidesHandle() { }
         protected override bool ReleaseHandle() { NativeMethods.lml_guides_free(handle); return true; }
     }
+
+    internal sealed class NetHandle : LamellaHandle
+    {
+        public NetHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_net_free(handle); return true; }
+    }
 }
