@@ -85,7 +85,7 @@ pub fn quad_net_at(mesh: &TriMesh, f: &[f64], g: &[f64], levels: [Vec<f64>; 2]) 
             quads.push([a, b, c, d]);
         }
     }
-    let rows = runs(levels[0].len(), levels[1].len(), &at);
+    let rows = runs(levels[0].len(), levels[1].len(), at);
     let columns = runs(levels[1].len(), levels[0].len(), |j, i| at(i, j));
     QuadNet { levels, vertices, quads, rows, columns }
 }
