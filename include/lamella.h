@@ -1381,6 +1381,25 @@ LmlStatus lml_net_new(const struct LmlMesh *mesh,
                       double intersection_degrees,
                       struct LmlNet **out);
 
+// The default start of a net (Rust `net_start`): the first family's winner of the default start
+// search, then the second family's among the candidates crossing it at 45° or more on average;
+// each field is where its short solve ended. Families by θ as in `lml_net_new`. Writes `2 n`
+// doubles (the first field, then the second) to `fields` with the two-call pattern: `*needed`
+// receives `2 n`; with `capacity` below it nothing is computed or copied and
+// `LML_STATUS_BUFFER_TOO_SMALL` is returned (`fields` may be NULL then). Runs a few dozen short
+// solves: seconds on meshes of thousands of vertices.
+//
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL`, `LML_STATUS_INVALID_ARGUMENT` (NULL
+// mesh or `needed`, θ or the minimum angle out of range, named) or `LML_STATUS_SINGULAR_FIELD`
+// (no candidate leads to a family; the message gives every candidate's reason).
+LmlStatus lml_net_start(const struct LmlMesh *mesh,
+                        double theta_degrees_f,
+                        double theta_degrees_g,
+                        double min_intersection_degrees,
+                        double *fields,
+                        size_t capacity,
+                        size_t *needed);
+
 // Releases a session. NULL is accepted and ignored. The handle must not be used again.
 void lml_net_free(struct LmlNet *net);
 

@@ -74,6 +74,24 @@ namespace Lamella.Tests
         }
 
         [Test]
+        public void TheDefaultStartGivesTwoCrossingFields()
+        {
+            var cylinder = new Cylinder(16, 10, 11);
+            using (var mesh = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            {
+                double[][] fields = NetSolver.DefaultStart(mesh, 90.0, 90.0);
+                Assert.AreEqual(2, fields.Length);
+                Assert.AreEqual(cylinder.VertexCount, fields[0].Length);
+                using (var net = new NetSolver(mesh, 90.0, 90.0, fields[0], fields[1]))
+                {
+                    Assert.GreaterOrEqual(net.Report.MeanIntersectionDegrees, 45.0);
+                }
+                var error = Assert.Throws<LamellaException>(() => NetSolver.DefaultStart(mesh, 90.0, 200.0));
+                StringAssert.Contains("theta", error.Message);
+            }
+        }
+
+        [Test]
         public void InvalidArgumentsAreRefusedByName()
         {
             var cylinder = new Cylinder(8, 6, 3);

@@ -63,6 +63,24 @@ namespace Lamella
                 minIntersectionDegrees, intersectionDegrees ?? double.NaN, out handle));
         }
 
+        /// <summary>
+        /// The default start of a net (<c>lml_net_start</c>): the first family from the default start search, the second
+        /// among the candidates crossing it at 45° or more on average. Returns the two fields (one value per vertex each).
+        /// </summary>
+        /// <exception cref="LamellaException">θ or the minimum angle out of range (named), or no candidate leads to a family.</exception>
+        public static double[][] DefaultStart(LamellaMesh mesh, double firstThetaDegrees, double secondThetaDegrees, double minIntersectionDegrees = 30.0)
+        {
+            if (mesh == null) throw new ArgumentNullException(nameof(mesh));
+            double[] both = Native.Read((double[] b, UIntPtr c, out UIntPtr n) =>
+                NativeMethods.lml_net_start(mesh.Handle, firstThetaDegrees, secondThetaDegrees, minIntersectionDegrees, b, c, out n));
+            int half = both.Length / 2;
+            var first = new double[half];
+            var second = new double[half];
+            Array.Copy(both, first, half);
+            Array.Copy(both, half, second, 0, half);
+            return new[] { first, second };
+        }
+
         /// <summary>Runs at most <paramref name="maxIterations"/> iterations; returns the state (converged or not).</summary>
         public NetReport Step(int maxIterations)
         {

@@ -7,7 +7,8 @@ use super::raw::{copy_out, handle, handle_mut, input, release, Out};
 use super::status::LmlStatus;
 use super::failure::Failure;
 use crate::field::{Family, FieldError};
-use crate::net::{NetParams, NetReport, NetSolver};
+use crate::initialisation::{SearchError, SearchOptions};
+use crate::net::{net_start, NetParams, NetReport, NetSolver};
 
 /// A net optimisation session (opaque): a copy of the mesh, the two fields, their auxiliary
 /// variables and the solver state. Create it with `lml_net_new`, release it with `lml_net_free`.
@@ -97,6 +98,47 @@ pub unsafe extern "C" fn lml_net_new(
         let (first, second) = fields.split_at(n);
         out.set_owned(LmlNet { solver: NetSolver::new(&mesh.mesh, &[first.to_vec(), second.to_vec()], params)? });
         Ok(LmlStatus::Ok)
+    })
+}
+
+/// The default start of a net (Rust `net_start`): the first family's winner of the default start
+/// search, then the second family's among the candidates crossing it at 45° or more on average;
+/// each field is where its short solve ended. Families by θ as in `lml_net_new`. Writes `2 n`
+/// doubles (the first field, then the second) to `fields` with the two-call pattern: `*needed`
+/// receives `2 n`; with `capacity` below it nothing is computed or copied and
+/// `LML_STATUS_BUFFER_TOO_SMALL` is returned (`fields` may be NULL then). Runs a few dozen short
+/// solves: seconds on meshes of thousands of vertices.
+///
+/// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL`, `LML_STATUS_INVALID_ARGUMENT` (NULL
+/// mesh or `needed`, θ or the minimum angle out of range, named) or `LML_STATUS_SINGULAR_FIELD`
+/// (no candidate leads to a family; the message gives every candidate's reason).
+#[no_mangle]
+pub unsafe extern "C" fn lml_net_start(
+    mesh: *const LmlMesh,
+    theta_degrees_f: f64,
+    theta_degrees_g: f64,
+    min_intersection_degrees: f64,
+    fields: *mut f64,
+    capacity: usize,
+    needed: *mut usize,
+) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (all blocks): live mesh handle; `fields` writable for `capacity` doubles; `needed` writable.
+        let mesh = unsafe { handle(mesh, "mesh") }?;
+        let mut params = NetParams::new(Family::from_theta(theta_degrees_f), Family::from_theta(theta_degrees_g));
+        params.min_intersection_degrees = min_intersection_degrees;
+        params.validate()?;
+        let n = mesh.mesh.vertex_count();
+        if capacity < 2 * n || fields.is_null() {
+            // Nothing to compute: report the size only.
+            return unsafe { copy_out(&vec![0.0; 2 * n], fields, capacity, needed, "fields") };
+        }
+        let started = net_start(&mesh.mesh, &params, &SearchOptions::default()).map_err(|e| match e {
+            SearchError::Field(error) => Failure::from(error),
+            other => Failure::new(LmlStatus::SingularField, other.to_string()),
+        })?;
+        let flat: Vec<f64> = started.concat();
+        unsafe { copy_out(&flat, fields, capacity, needed, "fields") }
     })
 }
 

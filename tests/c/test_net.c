@@ -84,6 +84,29 @@ void test_net(const Cylinder *c)
     CHECK_STATUS(lml_net_new(mesh, 90.0, 90.0, NULL, n, 30.0, NAN, &net), LML_STATUS_INVALID_ARGUMENT);
     CHECK(net == NULL);
 
+    /* The default start: both geodesic families from the start search, sized by the two-call pattern. */
+    CHECK_STATUS(lml_net_start(mesh, 90.0, 90.0, 30.0, NULL, 0, &needed), LML_STATUS_BUFFER_TOO_SMALL);
+    CHECK(needed == 2 * n);
+    CHECK_STATUS(lml_net_start(mesh, 90.0, 200.0, 30.0, fields, 2 * n, &needed), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("theta");
+    CHECK_STATUS(lml_net_start(NULL, 90.0, 90.0, 30.0, fields, 2 * n, &needed), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_STATUS(lml_net_start(mesh, 90.0, 90.0, 30.0, fields, 2 * n, &needed), LML_STATUS_OK);
+    CHECK_STATUS(lml_net_new(mesh, 90.0, 90.0, fields, n, 30.0, NAN, &net), LML_STATUS_OK);
+    if (net != NULL) {
+        /* The started families cross: the start search kept the second across the first. */
+        CHECK_STATUS(lml_net_report(net, &report), LML_STATUS_OK);
+        CHECK(report.iterations == 0 && report.mean_intersection_degrees >= 45.0);
+    }
+    lml_net_free(net);
+    net = NULL;
+
+    /* Heights along the axis and around it, each turned by 10 degrees toward the other. */
+    for (v = 0; v < n; v++) {
+        const double *p = c->xyz + 3 * v;
+        double arc = CYLINDER_RADIUS * atan2(p[1], p[0]);
+        fields[v] = p[2] + 0.18 * arc;
+        fields[n + v] = arc - 0.18 * p[2];
+    }
     CHECK_STATUS(lml_net_new(mesh, 90.0, 90.0, fields, n, 30.0, 90.0, &net), LML_STATUS_OK);
     lml_mesh_free(mesh);
     if (net == NULL) {

@@ -79,6 +79,9 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_net_new(MeshHandle mesh, double thetaDegreesF, double thetaDegreesG, double[] initialFields, UIntPtr n,
             double minIntersectionDegrees, double intersectionDegrees, out NetHandle net);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_net_start(MeshHandle mesh, double thetaDegreesF, double thetaDegreesG, double minIntersectionDegrees,
+            [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_net_free(IntPtr net);
         [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_net_step(NetHandle net, uint maxIterations, out NetReportRecord report);
         [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_net_report(NetHandle net, out NetReportRecord report);
