@@ -207,6 +207,10 @@ typedef struct LmlGuides LmlGuides;
 // release it with `lml_mesh_free`. Immutable once created.
 typedef struct LmlMesh LmlMesh;
 
+// A net optimisation session (opaque): a copy of the mesh, the two fields, their auxiliary
+// variables and the solver state. Create it with `lml_net_new`, release it with `lml_net_free`.
+typedef struct LmlNet LmlNet;
+
 // A start search (opaque). Create it with `lml_search_new`, step it with `lml_search_step`
 // until it returns `LML_STATUS_OK`, read its candidates, take the field with
 // `lml_search_field`, release it with `lml_search_free`.
@@ -579,6 +583,27 @@ typedef struct LmlPiece {
   // Size of its bounding box (along the board, across).
   double size[2];
 } LmlPiece;
+
+// The state of a net optimisation after `lml_net_step` (written by the library; the caller owns
+// the struct). Angles in degrees; index 0 is the first field, 1 the second.
+typedef struct LmlNetReport {
+  // Iterations run since the session was created.
+  uint64_t iterations;
+  // 1 when the final stage has converged (further steps do nothing), else 0.
+  uint64_t converged;
+  // RMS and maximum of each family's |θ_measured − θ| over its measured vertices.
+  double angle_error_rms_degrees[2];
+  double angle_error_max_degrees[2];
+  // Singular vertices of each field.
+  uint64_t singular_vertex_count[2];
+  // Smallest and area-weighted mean unsigned intersection angle of the two families over the faces.
+  double min_intersection_degrees;
+  double mean_intersection_degrees;
+  // Faces where the families cross below the minimum angle.
+  uint64_t faces_below_min;
+  // The weighted energy being minimised.
+  double energy_total;
+} LmlNetReport;
 
 // Pseudo-geodesics: the binormal keeps the angle `theta_degrees` to the surface normal
 // (`E_angle`, paper Eq. 8–10).
@@ -1503,6 +1528,73 @@ LmlStatus lml_fabrication_text(const struct LmlFabrication *fabrication,
                                uint8_t *text,
                                size_t capacity,
                                size_t *needed);
+
+// Starts a net optimisation of two families with the default weights.
+//
+// - `mesh`: the surface (copied).
+// - `theta_degrees_f`, `theta_degrees_g`: each family by its angle θ in [0°, 180°]: 0° and 180°
+//   asymptotic curves, 90° geodesics, others pseudo-geodesics of that signed angle.
+// - `initial_fields`: `2 n` doubles, the first field's `n` values (one per vertex) then the
+//   second's; each not constant, finite, magnitude at most 1e100. Copied.
+// - `min_intersection_degrees`: minimum intersection angle, in [0°, 90°) (30 by default in Rust).
+// - `intersection_degrees`: target intersection angle in (0°, 180°) held as a weak term, or NaN
+//   for none.
+// - `out`: receives the new session (release with `lml_net_free`); NULL on failure.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `n` ≠ vertex count, a
+// value out of range, naming it); `LML_STATUS_SINGULAR_FIELD` (a constant field).
+LmlStatus lml_net_new(const struct LmlMesh *mesh,
+                      double theta_degrees_f,
+                      double theta_degrees_g,
+                      const double *initial_fields,
+                      size_t n,
+                      double min_intersection_degrees,
+                      double intersection_degrees,
+                      struct LmlNet **out);
+
+// The default start of a net (Rust `net_start`): the first family's winner of the default start
+// search, then the second family's among the candidates crossing it at 45° or more on average;
+// each field is where its short solve ended. Families by θ as in `lml_net_new`. Writes `2 n`
+// doubles (the first field, then the second) to `fields` with the two-call pattern: `*needed`
+// receives `2 n`; with `capacity` below it nothing is computed or copied and
+// `LML_STATUS_BUFFER_TOO_SMALL` is returned (`fields` may be NULL then). Runs a few dozen short
+// solves: seconds on meshes of thousands of vertices.
+//
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL`, `LML_STATUS_INVALID_ARGUMENT` (NULL
+// mesh or `needed`, θ or the minimum angle out of range, named) or `LML_STATUS_SINGULAR_FIELD`
+// (no candidate leads to a family; the message gives every candidate's reason).
+LmlStatus lml_net_start(const struct LmlMesh *mesh,
+                        double theta_degrees_f,
+                        double theta_degrees_g,
+                        double min_intersection_degrees,
+                        double *fields,
+                        size_t capacity,
+                        size_t *needed);
+
+// Releases a session. NULL is accepted and ignored. The handle must not be used again.
+void lml_net_free(struct LmlNet *net);
+
+// Runs at most `max_iterations` iterations and writes the state to `*report` (may be NULL).
+//
+// Returns `LML_STATUS_MORE` (step again), `LML_STATUS_CONVERGED`, `LML_STATUS_INVALID_ARGUMENT`
+// (NULL or misaligned pointer) or `LML_STATUS_DID_NOT_CONVERGE` (an iteration failed
+// numerically; the fields keep their last good state).
+LmlStatus lml_net_step(struct LmlNet *net, uint32_t max_iterations, struct LmlNetReport *report);
+
+// Writes the state after the last step (or after creation) to `*report`.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_net_report(const struct LmlNet *net, struct LmlNetReport *report);
+
+// Copies field `k` (0 or 1; one value per vertex, in the scale of its start field) into
+// `values` with the two-call pattern: `*needed` receives the vertex count; with `capacity`
+// below it nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned (`values` may be
+// NULL then). Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or
+// `LML_STATUS_INVALID_ARGUMENT` (NULL net or `needed`, `k` > 1).
+LmlStatus lml_net_field(const struct LmlNet *net,
+                        uint32_t k,
+                        double *values,
+                        size_t capacity,
+                        size_t *needed);
 
 #ifdef __cplusplus
 }  // extern "C"

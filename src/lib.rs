@@ -5,7 +5,9 @@
 //! the sparse Levenberg–Marquardt [`solver`] from an [`initialisation`] (guide curves or
 //! sketched strokes, and the automatic design);
 //! its level [`curves`]; the rectifying developable [`strips`] along them with their flat
-//! unrollings; what a workshop needs to make them in [`fabrication`]; the outside reviewer's measures of the results in [`quality`]; the C ABI in
+//! unrollings; gridshells from [`net`]s of two families (Sec. 4.1); what a workshop needs to
+//! make them in [`fabrication`]; the outside reviewer's measures of the results in [`quality`];
+//! the C ABI in
 //! [`ffi`]; procedural [`surfaces`] for tests and the demo; [`input`]: the size limit of input
 //! files and the bounds on text quoted in error messages.
 pub mod curves;
@@ -15,6 +17,7 @@ pub mod field;
 pub mod initialisation;
 pub mod input;
 pub mod mesh;
+pub mod net;
 pub mod quality;
 pub mod solver;
 pub mod strips;

@@ -39,6 +39,7 @@ namespace Lamella.Tests
             { "LmlStripCheck", typeof(StripCheck) },
             { "LmlPiece", typeof(Piece) },
             { "LmlFabricationSummary", typeof(FabricationSummary) },
+            { "LmlNetReport", typeof(NetReportRecord) },
         };
 
         /// <summary>Integer typedefs of the header and the managed enum each is carried by (also in arrays).</summary>

@@ -11,7 +11,8 @@
 //! ([`LmlSearch`]), field solver sessions ([`LmlField`]), level curves ([`LmlCurves`]) and rectifying strips with their unrollings and
 //! metrics ([`LmlStrips`]), each a handle module with `lml_<handle>_new` / `_free` and two-call
 //! array outputs, and the initialisation of Sec. 3.2.2: boundary start points, traced guide
-//! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes.
+//! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes; and nets of two
+//! families ([`LmlNet`], paper Sec. 4.1).
 //!
 //! The header is generated from this module by cbindgen (configuration in `cbindgen.toml`);
 //! `tests/ffi_header.rs` fails when the committed header is stale and rewrites it when
@@ -47,6 +48,7 @@ mod boundary_starts;
 mod guides;
 mod initial_fields;
 mod fabrication;
+mod net;
 
 pub use boundary_starts::*;
 pub use curves::*;
@@ -60,6 +62,7 @@ pub use initial_fields::*;
 pub use last_error::lml_last_error_message;
 pub use live_handles::lml_debug_live_handles;
 pub use mesh::*;
+pub use net::*;
 pub use report::*;
 pub use search::*;
 pub use session::*;

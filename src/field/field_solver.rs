@@ -1,6 +1,7 @@
 //! The stepwise field optimiser (Sec. 3.2.2): create it, `step` it a few iterations at a
 //! time, read the field and the binormals in between, change the weights, continue.
 
+use super::auxiliaries::{auxiliary, initialize_auxiliaries, reorient_side_vectors};
 use super::darboux::LevelFrame;
 use super::error::FieldError;
 use super::failure_site::largest_residual_vertices;
@@ -258,13 +259,7 @@ impl FieldSolver {
     }
 
     fn auxiliary(&self, k: usize, offset: usize) -> Vec3 {
-        let start = self.problem.auxiliary_start(k) + offset;
-        Vec3::new(self.x[start], self.x[start + 1], self.x[start + 2])
-    }
-
-    fn set_auxiliary(&mut self, k: usize, offset: usize, value: &Vec3) {
-        let start = self.problem.auxiliary_start(k) + offset;
-        self.x[start..start + 3].copy_from_slice(value.as_slice());
+        auxiliary(&self.problem, &self.x, k, offset)
     }
 
     /// `value(self, k, frame)` at each regular curve vertex (the `k`-th, with its level frame);
@@ -289,40 +284,16 @@ impl FieldSolver {
         self.lm.reset_damping();
     }
 
-    /// Starts `b` at the discrete binormal of the level polyline (or at `cos θ n + sin θ u`
-    /// where it is straight) and `u` at `n × t` (Sec. 3.2.2).
+    /// Starts the auxiliaries `b`, `u` (Sec. 3.2.2, [`super::auxiliaries`]).
     fn initialize_auxiliaries(&mut self) {
-        let Family::PseudoGeodesic { theta_degrees } = self.problem.family() else { return };
-        let (sin, cos) = theta_degrees.to_radians().sin_cos();
-        for k in 0..self.problem.curve_vertices().len() {
-            let v = self.problem.curve_vertices()[k] as usize;
-            let normal = self.problem.mesh().smooth_normals()[v];
-            let (b, u) = match self.problem.level_frame(k, &self.x) {
-                Some(frame) => (frame.binormal.unwrap_or(normal * cos + frame.side * sin), frame.side),
-                None => (normal, any_tangent(&normal)),
-            };
-            self.set_auxiliary(k, 0, &b);
-            self.set_auxiliary(k, 3, &u);
-        }
+        initialize_auxiliaries(&self.problem, &mut self.x);
     }
 
-    /// The orientation test of Sec. 3.2.2: where `det(q − p, u, n) ≤ 0`, re-initialise
-    /// `u = n × (q − p)` normalised. Returns how many side vectors were flipped. The level frames
-    /// are those the last report measured at this field, or are measured now.
+    /// The orientation test of Sec. 3.2.2 ([`reorient_side_vectors`]). The level frames are
+    /// those the last report measured at this field, or are measured now.
     fn reorient_side_vectors(&mut self) -> usize {
-        if !matches!(self.problem.family(), Family::PseudoGeodesic { .. }) {
-            return 0;
-        }
         let frames = self.take_frames();
-        let mut flips = 0;
-        for (k, frame) in frames.iter().enumerate() {
-            if let Some(frame) = frame {
-                if self.auxiliary(k, 3).dot(&frame.side) <= 0.0 {
-                    self.set_auxiliary(k, 3, &frame.side);
-                    flips += 1;
-                }
-            }
-        }
+        let flips = reorient_side_vectors(&self.problem, &mut self.x, &frames);
         // Still the frames of the current field: only side vectors moved.
         self.frames = Some(frames);
         flips
@@ -377,19 +348,14 @@ impl FieldSolver {
     }
 }
 
-pub(super) fn stage_weights(params: &FieldParams, stage: usize) -> (usize, Weights) {
+pub(crate) fn stage_weights(params: &FieldParams, stage: usize) -> (usize, Weights) {
     match params.schedule.get(stage) {
         Some(s) => (stage, s.weights),
         None => (params.schedule.len(), params.weights),
     }
 }
 
-fn any_tangent(normal: &Vec3) -> Vec3 {
-    let helper = if normal.x.abs() < 0.9 { Vec3::x() } else { Vec3::y() };
-    normal.cross(&helper).normalize()
-}
-
-fn validate_field(mesh: &TriMesh, field: &[f64]) -> Result<(), FieldError> {
+pub(crate) fn validate_field(mesh: &TriMesh, field: &[f64]) -> Result<(), FieldError> {
     if field.len() != mesh.vertex_count() {
         return Err(FieldError::FieldLength { expected: mesh.vertex_count(), actual: field.len() });
     }

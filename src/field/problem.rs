@@ -62,12 +62,25 @@ pub struct FieldProblem {
     /// Curve block variables (stencil field values, then auxiliaries), CSR by curve-vertex index.
     curve_offsets: Vec<usize>,
     curve_variables: Vec<u32>,
+    /// Index of the first auxiliary variable (`vertex_count` when the problem stands alone; a
+    /// multi-field problem places each field's auxiliaries after all the fields, see
+    /// [`crate::net`]).
+    auxiliary_base: usize,
 }
 
 impl FieldProblem {
     /// The problem of Eq. 12 on `mesh` (meant to be unit-scaled: weights assume mean edge length 1),
     /// with the target gradient norm `gradient_target` of `E_grad`.
     pub fn new(mesh: TriMesh, family: Family, weights: Weights, gradient_target: f64) -> Self {
+        let base = mesh.vertex_count();
+        Self::with_auxiliary_base(mesh, family, weights, gradient_target, base)
+    }
+
+    /// [`Self::new`] with the auxiliaries of the `k`-th curve vertex at
+    /// `auxiliary_base + AUXILIARIES · k` (≥ the vertex count) instead of right after the field:
+    /// how a multi-field problem lays several fields and their auxiliaries out in one vector.
+    pub(crate) fn with_auxiliary_base(mesh: TriMesh, family: Family, weights: Weights, gradient_target: f64, auxiliary_base: usize) -> Self {
+        debug_assert!(auxiliary_base >= mesh.vertex_count());
         let fairness = HessianEnergy::new(&mesh);
         let auxiliaries = Self::auxiliaries_per_vertex(family);
         let all: Vec<u32> = (0..mesh.vertex_count() as u32).collect();
@@ -78,7 +91,7 @@ impl FieldProblem {
         let mut curve_variables = Vec::new();
         for k in 0..curve_vertices.len() {
             curve_variables.extend_from_slice(jets.get(k).vertices);
-            let first_aux = mesh.vertex_count() + auxiliaries * k;
+            let first_aux = auxiliary_base + auxiliaries * k;
             curve_variables.extend((first_aux..first_aux + auxiliaries).map(|i| i as u32));
             curve_offsets.push(curve_variables.len());
         }
@@ -94,11 +107,12 @@ impl FieldProblem {
             model_size: super::darboux::model_size(&mesh),
             curve_offsets,
             curve_variables,
+            auxiliary_base,
             mesh,
         }
     }
 
-    fn auxiliaries_per_vertex(family: Family) -> usize {
+    pub(crate) fn auxiliaries_per_vertex(family: Family) -> usize {
         match family {
             Family::PseudoGeodesic { .. } => pseudo_geodesic::AUXILIARIES,
             Family::Geodesic | Family::Asymptotic => 0,
@@ -162,7 +176,7 @@ impl FieldProblem {
 
     /// Index of the first auxiliary of the `k`-th curve vertex (pseudo-geodesics only).
     pub fn auxiliary_start(&self, k: usize) -> usize {
-        self.mesh.vertex_count() + Self::auxiliaries_per_vertex(self.family) * k
+        self.auxiliary_base + Self::auxiliaries_per_vertex(self.family) * k
     }
 
     /// The level jet of the `k`-th curve vertex at `x`; `None` where the vertex is singular

@@ -39,6 +39,7 @@ use super::proxy::{carried_to, search_proxy};
 use crate::curves::{extract_level_curves, uniform_levels};
 use crate::field::{validate_params, Family, FieldError, FieldParams, FieldSolver};
 use crate::mesh::{TriMesh, Vec3};
+use crate::net::intersection_angles;
 use crate::quality::{family_angles, FamilyAngles};
 use crate::tracing::{boundary_segments, intersections, trace_guide_set, DEFAULT_CORNER_TURN_DEGREES};
 
@@ -137,6 +138,9 @@ pub struct StartSearch {
     /// The best candidate so far: its index and its field after the short solve.
     best: Option<(usize, f64, Vec<f64>)>,
     guides_queued: bool,
+    /// A field (on the probed mesh) whose level sets the candidates must cross at a mean angle
+    /// of at least this many degrees: the other family of a net ([`Self::crossing`]).
+    crossing: Option<(Vec<f64>, f64)>,
 }
 
 /// A candidate not probed yet: its kind, initial field and `E_grad` target.
@@ -164,6 +168,7 @@ impl StartSearch {
             candidates: Vec::new(),
             best: None,
             guides_queued: false,
+            crossing: None,
         };
         search.queue_heights();
         Ok(search)
@@ -197,7 +202,7 @@ impl StartSearch {
                     candidate.max_error_degrees = measure.max_error_degrees;
                     candidate.straight_fraction = measure.straight_fraction();
                     candidate.singular_vertices = singular;
-                    match self.score(&measure, singular) {
+                    match self.score(&measure, singular).and_then(|score| self.check_crossing(&probed).map(|()| score)) {
                         Err(reason) => candidate.rejected = Some(reason),
                         Ok(score) => {
                             candidate.score = Some(score);
@@ -211,6 +216,41 @@ impl StartSearch {
         }
         self.candidates.push(candidate);
         Ok(!self.pending.is_empty() || (!self.guides_queued && !self.has_acceptable()))
+    }
+
+    /// Rejects every candidate whose level sets cross those of `field` (one value per vertex of
+    /// the mesh) at an area-weighted mean angle below `min_mean_degrees` (in [0°, 90°]): the
+    /// start of the second family of a net (Sec. 4.1), which must not run along the first.
+    /// Errors: `FieldLength`, `NonFiniteValue`, `ValueOutOfRange` or `ConstantField` for
+    /// `field`, `InvalidParameter` for the angle.
+    pub fn crossing(mut self, field: &[f64], min_mean_degrees: f64) -> Result<StartSearch, FieldError> {
+        crate::field::validate_field(&self.mesh, field)?;
+        if !(min_mean_degrees.is_finite() && (0.0..=90.0).contains(&min_mean_degrees)) {
+            return Err(FieldError::InvalidParameter { name: "min_mean_degrees", message: format!("must lie in [0°, 90°], got {min_mean_degrees}") });
+        }
+        let field = match &self.proxy {
+            Some(proxy) => carried_to(&self.mesh, field, proxy),
+            None => field.to_vec(),
+        };
+        self.crossing = Some((field, min_mean_degrees));
+        Ok(self)
+    }
+
+    /// `Err(reason)` when `probed` runs too close to the field of [`Self::crossing`].
+    fn check_crossing(&self, probed: &[f64]) -> Result<(), String> {
+        let Some((other, min_mean)) = &self.crossing else { return Ok(()) };
+        let mesh = self.probed_mesh();
+        let (mut weighted, mut area) = (0.0, 0.0);
+        for (f, angle) in intersection_angles(mesh, other, probed).into_iter().enumerate() {
+            weighted += angle.unwrap_or(0.0) * mesh.face_areas()[f];
+            area += mesh.face_areas()[f];
+        }
+        let mean = weighted / area;
+        if mean >= *min_mean {
+            Ok(())
+        } else {
+            Err(format!("crosses the other family at {mean:.1}° on average, below {min_mean}°"))
+        }
     }
 
     /// Every candidate probed so far, in order.

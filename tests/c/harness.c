@@ -25,6 +25,7 @@ int main(int argc, char **argv)
     test_threads(&cylinder);
     test_guides(&cylinder);
     test_search(&small);
+    test_net(&small);
     field = test_solve(&cylinder);
     CHECK(field != NULL);
     if (field != NULL) {

@@ -42,4 +42,7 @@ void test_guides(const Cylinder *cylinder);
  * covering their strips with the overlaps, the DXF's layers, piece ids and the bill of materials. */
 void test_fabrication(const LmlCurves *curves);
 
+/* A net of two families (geodesic circles and rulings on the cylinder): every invalid input,
+ * stepping to convergence, both fields with the two-call pattern against the cylinder's axis. */
+void test_net(const Cylinder *cylinder);
 #endif

@@ -53,4 +53,10 @@ namespace Lamella.Interop
         public FabricationHandle() { }
         protected override bool ReleaseHandle() { NativeMethods.lml_fabrication_free(handle); return true; }
     }
+
+    internal sealed class NetHandle : LamellaHandle
+    {
+        public NetHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_net_free(handle); return true; }
+    }
 }

@@ -75,6 +75,19 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_search_proxy_vertex_count(SearchHandle search, out UIntPtr count);
         [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_search_field(SearchHandle search, out FieldHandle field);
 
+        // LmlNet.
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_net_new(MeshHandle mesh, double thetaDegreesF, double thetaDegreesG, double[] initialFields, UIntPtr n,
+            double minIntersectionDegrees, double intersectionDegrees, out NetHandle net);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_net_start(MeshHandle mesh, double thetaDegreesF, double thetaDegreesG, double minIntersectionDegrees,
+            [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_net_free(IntPtr net);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_net_step(NetHandle net, uint maxIterations, out NetReportRecord report);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_net_report(NetHandle net, out NetReportRecord report);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_net_field(NetHandle net, uint k, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_field_save(FieldHandle field, [Out] byte[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)]

@@ -42,6 +42,10 @@ pub enum Command {
     /// pieces laid out on stock boards. Writes cut.dxf, cut.svg, bom.csv, utilisation.svg,
     /// report.json.
     Fabricate(FabricateArgs),
+    /// A gridshell net of two curve families (paper Sec. 4.1): both fields optimised together,
+    /// strips per family, the quad net of their crossings and the nodes. Writes curves_<k>.obj,
+    /// strips_<k>.obj, net.obj, nodes.csv, unrolled.svg (with node marks), preview.svg, report.json.
+    Net(NetArgs),
 }
 
 /// Progress and summary output.
@@ -335,6 +339,39 @@ pub struct FabricateArgs {
     pub theta: Option<f64>,
     #[command(flatten)]
     pub fabrication: FabricationFlags,
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub verbosity: VerbosityArgs,
+}
+
+#[derive(Args, Debug, Clone)]
+pub struct NetArgs {
+    #[command(flatten)]
+    pub mesh: MeshArgs,
+    /// The two families, comma-separated: P<θ> (pseudo-geodesics of angle θ in degrees), G
+    /// (geodesics) or A (asymptotic curves), e.g. P60,P60 or A,A.
+    #[arg(long, value_name = "F,G")]
+    pub families: String,
+    /// Target intersection angle of the two families in degrees, in (0, 180), held as a weak term
+    /// [default: none, only --min-angle is held].
+    #[arg(long, value_name = "DEGREES")]
+    pub angle: Option<f64>,
+    /// Minimum intersection angle of the two families in degrees, in [0, 90).
+    #[arg(long, value_name = "DEGREES", default_value_t = 30.0)]
+    pub min_angle: f64,
+    /// Level curves (strips) per family.
+    #[arg(long, value_name = "N", default_value_t = 10)]
+    pub lines: usize,
+    /// Strip width in metres [default: half the mean spacing of neighbouring curves].
+    #[arg(long, value_name = "M")]
+    pub width: Option<f64>,
+    /// Most Levenberg–Marquardt iterations of the net solve.
+    #[arg(long, value_name = "N", default_value_t = 300)]
+    pub max_iterations: usize,
+    /// Largest strip-plane angle error (degrees) of an acceptable family; above it the command exits 3.
+    #[arg(long, value_name = "DEGREES", default_value_t = 2.0)]
+    pub tolerance: f64,
     #[command(flatten)]
     pub out: OutArgs,
     #[command(flatten)]

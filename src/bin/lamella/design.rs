@@ -61,7 +61,7 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     write_field_files(&out, &solver, &history)?;
     write_strip_files(&out, &mesh, &run)?;
     let pieces: Vec<CutPiece> =
-        run.pattern.strips.iter().enumerate().map(|(id, s)| CutPiece { name: strip_name(id), unrolling: &s.unrolling }).collect();
+        run.pattern.strips.iter().enumerate().map(|(id, s)| CutPiece { name: strip_name(id), unrolling: &s.unrolling, marks: Vec::new() }).collect();
     out.write("unrolled.svg", cut_sheet_svg(&pieces))?;
     let plan = match fabrication {
         Some(mut params) => {

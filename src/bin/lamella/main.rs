@@ -17,6 +17,7 @@ mod guides;
 mod info;
 mod mesh_input;
 mod metrics;
+mod net_cmd;
 mod output_dir;
 mod progress;
 mod report_json;
@@ -63,5 +64,6 @@ fn run(cli: &Cli) -> CliResult<()> {
         Some(Command::Unroll(args)) => unroll::run(args),
         Some(Command::Metrics(args)) => metrics::run(args),
         Some(Command::Fabricate(args)) => fabricate::run(args),
+        Some(Command::Net(args)) => net_cmd::run(args),
     }
 }

@@ -15,7 +15,7 @@ pub fn run(args: &UnrollArgs) -> CliResult<()> {
     let target = args.out.out.clone().unwrap_or_else(|| PathBuf::from(DEFAULT_OUT));
     let out = OutputDir::create(&target, args.out.force)?;
     let unrollings: Vec<Unrolling> = shapes.iter().map(|s| unroll(&s.centre(), &s.offsets())).collect();
-    let pieces: Vec<CutPiece> = shapes.iter().zip(&unrollings).map(|(s, u)| CutPiece { name: s.name.clone(), unrolling: u }).collect();
+    let pieces: Vec<CutPiece> = shapes.iter().zip(&unrollings).map(|(s, u)| CutPiece { name: s.name.clone(), unrolling: u, marks: Vec::new() }).collect();
     out.write("unrolled.svg", cut_sheet_svg(&pieces))?;
     out.commit()?;
     let total: f64 = unrollings.iter().map(|u| u.length).sum();

@@ -14,7 +14,18 @@ const MARGIN_MM: f64 = 20.0;
 pub struct CutPiece<'a> {
     pub name: String,
     pub unrolling: &'a Unrolling,
+    /// Node marks on the flat strip (a gridshell's crossings, `lamella net`).
+    pub marks: Vec<CutMark>,
 }
+
+/// A hole mark on a flat strip, in the unrolling's coordinates, labelled with the crossing strip.
+pub struct CutMark {
+    pub at: [f64; 2],
+    pub label: String,
+}
+
+/// Radius of a node mark, in mm.
+const MARK_RADIUS_MM: f64 = 4.0;
 
 /// The outline of a flat strip: left boundary forward, right boundary backward.
 fn outline(u: &Unrolling) -> Vec<[f64; 2]> {
@@ -50,7 +61,16 @@ const CHARACTER_WIDTH: f64 = 0.6;
 /// The cut sheet of `pieces`, packed in shelves: left to right in the given order, a new row
 /// when the next piece (or its label) would pass the widest piece's length.
 pub fn cut_sheet_svg(pieces: &[CutPiece]) -> String {
-    let laid: Vec<(Vec<[f64; 2]>, [f64; 2])> = pieces.iter().map(|p| placed(&outline(p.unrolling), &p.unrolling.centre)).collect();
+    // Marks are placed with their outline (they lie on its centre line, inside it), then split off.
+    let laid_with_marks: Vec<(Vec<[f64; 2]>, [f64; 2])> = pieces
+        .iter()
+        .map(|p| placed(&outline(p.unrolling).into_iter().chain(p.marks.iter().map(|m| m.at)).collect::<Vec<_>>(), &p.unrolling.centre))
+        .collect();
+    let laid: Vec<(Vec<[f64; 2]>, [f64; 2])> = laid_with_marks
+        .iter()
+        .zip(pieces)
+        .map(|((points, size), p)| (points[..points.len() - p.marks.len()].to_vec(), *size))
+        .collect();
     let tallest = laid.iter().map(|(_, size)| size[1]).fold(0.0, f64::max);
     let font = (0.3 * tallest).clamp(8.0, 200.0);
     let labels: Vec<String> = pieces
@@ -86,6 +106,15 @@ pub fn cut_sheet_svg(pieces: &[CutPiece]) -> String {
         let shifted = outline.iter().map(|p| [origin[0] + p[0], origin[1] + 1.5 * font + p[1]]);
         svg.element(&format!("<polygon class=\"strip\" id=\"{}\" points=\"{}\"/>", piece.name, points(shifted)));
         svg.text(origin[0], origin[1] + font, &label_style, label);
+    }
+    let mark_style = format!("class=\"node\" font-size=\"{}\" fill=\"#000\" stroke=\"none\" font-family=\"sans-serif\"", super::num(0.5 * font));
+    for (((points, _), piece), origin) in laid_with_marks.iter().zip(pieces).zip(&origins) {
+        let marks = &points[points.len() - piece.marks.len()..];
+        for (p, mark) in marks.iter().zip(&piece.marks) {
+            let (x, y) = (origin[0] + p[0], origin[1] + 1.5 * font + p[1]);
+            svg.element(&format!("<circle class=\"node\" cx=\"{}\" cy=\"{}\" r=\"{}\"/>", super::num(x), super::num(y), super::num(MARK_RADIUS_MM)));
+            svg.text(x + MARK_RADIUS_MM, y - MARK_RADIUS_MM, &mark_style, &mark.label);
+        }
     }
     svg.element("</g>");
     svg.finish()

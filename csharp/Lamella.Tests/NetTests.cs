@@ -1,0 +1,109 @@
+using System;
+using NUnit.Framework;
+
+namespace Lamella.Tests
+{
+    /// <summary>
+    /// A net of two families through the binding (paper Sec. 4.1): on the cylinder, the geodesic net of circles and
+    /// rulings from turned heights, stepped to convergence and checked against the axis; invalid arguments.
+    /// </summary>
+    [TestFixture]
+    public class NetTests
+    {
+        /// <summary>Mean over the triangles of the angle (degrees) between the field's gradient and the axis (z).</summary>
+        private static double MeanAxisAngle(Cylinder c, double[] field)
+        {
+            double sum = 0.0;
+            int counted = 0;
+            for (int t = 0; t < c.Triangles.Length / 3; t++)
+            {
+                int i0 = c.Triangles[3 * t], i1 = c.Triangles[3 * t + 1], i2 = c.Triangles[3 * t + 2];
+                var e1 = new double[3];
+                var e2 = new double[3];
+                for (int k = 0; k < 3; k++)
+                {
+                    e1[k] = c.Xyz[3 * i1 + k] - c.Xyz[3 * i0 + k];
+                    e2[k] = c.Xyz[3 * i2 + k] - c.Xyz[3 * i0 + k];
+                }
+                double a11 = e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2];
+                double a12 = e1[0] * e2[0] + e1[1] * e2[1] + e1[2] * e2[2];
+                double a22 = e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2];
+                double d1 = field[i1] - field[i0], d2 = field[i2] - field[i0], det = a11 * a22 - a12 * a12;
+                double a = (d1 * a22 - d2 * a12) / det, b = (d2 * a11 - d1 * a12) / det;
+                double gx = a * e1[0] + b * e2[0], gy = a * e1[1] + b * e2[1], gz = a * e1[2] + b * e2[2];
+                double norm = Math.Sqrt(gx * gx + gy * gy + gz * gz);
+                if (norm > 0.0)
+                {
+                    sum += Math.Acos(Math.Min(1.0, Math.Abs(gz) / norm)) * 180.0 / Math.PI;
+                    counted++;
+                }
+            }
+            return counted > 0 ? sum / counted : 90.0;
+        }
+
+        [Test]
+        public void TheGeodesicNetOfACylinderIsItsCirclesAndRulings()
+        {
+            var cylinder = new Cylinder(16, 10, 11);
+            int n = cylinder.VertexCount;
+            var first = new double[n];
+            var second = new double[n];
+            for (int v = 0; v < n; v++)
+            {
+                double arc = Cylinder.Radius * Math.Atan2(cylinder.Xyz[3 * v + 1], cylinder.Xyz[3 * v]);
+                first[v] = cylinder.Xyz[3 * v + 2] + 0.18 * arc;
+                second[v] = arc - 0.18 * cylinder.Xyz[3 * v + 2];
+            }
+            using (var mesh = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            using (var net = new NetSolver(mesh, 90.0, 90.0, first, second, 30.0, 90.0))
+            {
+                Assert.AreEqual(0, net.Report.Iterations);
+                NetReport report = net.Report;
+                for (int k = 0; k < 20 && !report.IsConverged; k++)
+                {
+                    report = net.Step(10);
+                }
+                Assert.IsTrue(report.IsConverged);
+                Assert.Less(report.AngleErrorRmsDegrees[0], 1.0);
+                Assert.Less(report.AngleErrorRmsDegrees[1], 1.0);
+                Assert.Greater(report.MeanIntersectionDegrees, 80.0);
+                Assert.Less(MeanAxisAngle(cylinder, net.Field(0)), 3.0);
+                Assert.Less(Math.Abs(90.0 - MeanAxisAngle(cylinder, net.Field(1))), 3.0);
+                Assert.Throws<ArgumentOutOfRangeException>(() => net.Field(2));
+            }
+        }
+
+        [Test]
+        public void TheDefaultStartGivesTwoCrossingFields()
+        {
+            var cylinder = new Cylinder(16, 10, 11);
+            using (var mesh = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            {
+                double[][] fields = NetSolver.DefaultStart(mesh, 90.0, 90.0);
+                Assert.AreEqual(2, fields.Length);
+                Assert.AreEqual(cylinder.VertexCount, fields[0].Length);
+                using (var net = new NetSolver(mesh, 90.0, 90.0, fields[0], fields[1]))
+                {
+                    Assert.GreaterOrEqual(net.Report.MeanIntersectionDegrees, 45.0);
+                }
+                var error = Assert.Throws<LamellaException>(() => NetSolver.DefaultStart(mesh, 90.0, 200.0));
+                StringAssert.Contains("theta", error.Message);
+            }
+        }
+
+        [Test]
+        public void InvalidArgumentsAreRefusedByName()
+        {
+            var cylinder = new Cylinder(8, 6, 3);
+            using (var mesh = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            {
+                var field = cylinder.InitialField;
+                var error = Assert.Throws<LamellaException>(() => new NetSolver(mesh, 90.0, 90.0, field, field, 95.0));
+                StringAssert.Contains("min_intersection_degrees", error.Message);
+                error = Assert.Throws<LamellaException>(() => new NetSolver(mesh, 200.0, 90.0, field, field));
+                StringAssert.Contains("theta", error.Message);
+                Assert.Throws<ArgumentException>(() => new NetSolver(mesh, 90.0, 90.0, field, new double[1]));
+            }
+        }
+    }
+}

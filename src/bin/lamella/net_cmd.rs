@@ -1,0 +1,277 @@
+//! `lamella net`: a gridshell net of two curve families (paper Sec. 4.1): two fields optimised
+//! together from the default start, their level curves and rectifying strips per family, the
+//! quad net of their crossings and the nodes where strips cross; exit 3 when a family's strips
+//! miss their angle (as `design`).
+use crate::args::NetArgs;
+use crate::config::DEFAULT_OUT;
+use crate::error::{CliError, CliResult};
+use crate::mesh_input::{load_mesh, mesh_name};
+use crate::output_dir::OutputDir;
+use crate::progress::{note, summary, Verbosity};
+use crate::strip_obj::{curves_obj, strips_obj};
+use crate::strips_cmd::{build_strips, StripRun};
+use crate::svg::cut_sheet::{cut_sheet_svg, CutMark, CutPiece};
+use crate::svg::preview::preview_svg;
+use lamella::field::Family;
+use lamella::initialisation::SearchOptions;
+use lamella::net::{flat_point, net_nodes, quad_net_at, NetParams, NetReport, NetSolver, Node, QuadNet};
+use lamella::strips::{PatternMetrics, StripPattern};
+use serde_json::{json, Value};
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// Iterations per `step` between progress notes.
+const STEP: usize = 10;
+
+/// Parses `--families`: two comma-separated names, `P<θ>` (pseudo-geodesics of angle θ in
+/// degrees, in (0, 180)), `G` (geodesics) or `A` (asymptotic curves).
+pub fn parse_families(text: &str) -> CliResult<Vec<Family>> {
+    let families: Vec<Family> = text.split(',').map(|name| parse_family(name.trim())).collect::<CliResult<_>>()?;
+    if families.len() != 2 {
+        return Err(CliError::bad_input(format!("--families: a net has two families, got {} in '{}'", families.len(), lamella::input::clip(text))));
+    }
+    Ok(families)
+}
+
+fn parse_family(name: &str) -> CliResult<Family> {
+    let bad = || CliError::bad_input(format!("--families: '{}' is not P<θ>, G or A", lamella::input::clip(name)));
+    match name {
+        "A" | "a" => Ok(Family::Asymptotic),
+        "G" | "g" => Ok(Family::Geodesic),
+        _ => {
+            let theta: f64 = name.strip_prefix(['P', 'p']).ok_or_else(bad)?.parse().map_err(|_| bad())?;
+            if !(theta.is_finite() && theta > 0.0 && theta < 180.0) {
+                return Err(CliError::bad_input(format!("--families: θ of '{}' must lie in (0°, 180°)", lamella::input::clip(name))));
+            }
+            Ok(Family::from_theta(theta))
+        }
+    }
+}
+
+/// A family's short name in file names and reports.
+fn family_label(family: &Family) -> String {
+    match family {
+        Family::PseudoGeodesic { theta_degrees } => format!("P{theta_degrees}"),
+        Family::Geodesic => "G".into(),
+        Family::Asymptotic => "A".into(),
+    }
+}
+
+/// How far below `--min-angle` the smallest crossing may fall before the net is refused (exit 3):
+/// the minimum angle is held by a penalty (Sec. 4.1), which lets a face sit just under it.
+const MIN_ANGLE_SLACK_DEGREES: f64 = 1.0;
+
+pub fn run(args: &NetArgs) -> CliResult<()> {
+    let started = Instant::now();
+    let verbosity = Verbosity::from(args.verbosity);
+    let families = parse_families(&args.families)?;
+    let mut params = NetParams::new(families[0], families[1]);
+    params.intersection_degrees = args.angle;
+    params.min_intersection_degrees = args.min_angle;
+    params.validate().map_err(|e| CliError::bad_input(format!("net: {e}")))?;
+    let mesh = load_mesh(args.mesh.mesh.as_deref())?;
+    let name = mesh_name(args.mesh.mesh.as_deref());
+    let target: PathBuf = args.out.out.clone().unwrap_or_else(|| PathBuf::from(DEFAULT_OUT));
+    let out = OutputDir::create(&target, args.out.force)?;
+    let labels: Vec<String> = families.iter().map(family_label).collect();
+    note(verbosity, &format!("{name}: {} vertices; net {}", mesh.vertex_count(), labels.join(", ")));
+    let fields = lamella::net::net_start(&mesh, &params, &SearchOptions::default()).map_err(|e| CliError::bad_input(format!("start: {e}")))?;
+    let mut solver = NetSolver::new(&mesh, &fields, params).map_err(|e| CliError::bad_input(format!("net: {e}")))?;
+    while solver.iterations() < args.max_iterations && !solver.is_converged() {
+        let report = solver.step(STEP.min(args.max_iterations - solver.iterations())).map_err(|e| CliError::internal(format!("net solve: {e}")))?;
+        if verbosity == Verbosity::Verbose {
+            note(verbosity, &progress_line(&report));
+        }
+    }
+    let field_seconds = started.elapsed().as_secs_f64();
+
+    let strips_started = Instant::now();
+    let fields = solver.fields();
+    let runs: Vec<StripRun> = families
+        .iter()
+        .zip(&fields)
+        .map(|(family, field)| build_strips(&mesh, field, family.theta_degrees(), args.lines, args.width, args.tolerance))
+        .collect::<CliResult<_>>()?;
+    let levels = [0, 1].map(|k| runs[k].curves.iter().map(|c| c.level).fold(Vec::new(), |mut levels: Vec<f64>, l| {
+        if levels.last() != Some(&l) {
+            levels.push(l);
+        }
+        levels
+    }));
+    let net = quad_net_at(&mesh, &fields[0], &fields[1], levels);
+    let nodes = net_nodes(&net, [&runs[0].pattern, &runs[1].pattern], 2.0 * mesh.mean_edge_length());
+    let strips_seconds = strips_started.elapsed().as_secs_f64();
+
+    for (k, run) in runs.iter().enumerate() {
+        out.write(&format!("curves_{k}.obj"), curves_obj(&run.curves))?;
+        out.write(&format!("strips_{k}.obj"), strips_obj(&run.pattern))?;
+    }
+    out.write("net.obj", net_obj(&net))?;
+    out.write("nodes.csv", nodes_csv(&nodes))?;
+    out.write("unrolled.svg", cut_sheet_svg(&cut_pieces(&runs, &nodes)))?;
+    out.write("preview.svg", preview_svg(&mesh, &merged(&runs)))?;
+    let report = report_json(&name, &labels, &solver, &runs, &net, &nodes, [field_seconds, strips_seconds, started.elapsed().as_secs_f64()]);
+    out.write("report.json", serde_json::to_string_pretty(&report).map_err(|e| CliError::internal(format!("report.json: {e}")))?)?;
+    let target = out.target().display().to_string();
+    out.commit()?;
+    let r = solver.report();
+    let family_lines: Vec<String> = runs
+        .iter()
+        .zip(&labels)
+        .map(|(run, label)| format!("{label}: {} strips, strip planes max angle error {:.3}°", run.pattern.strips.len(), run.pattern.metrics.max_quad_angle_error_degrees))
+        .collect();
+    summary(
+        verbosity,
+        &format!(
+            "{} iterations{}; intersection angle min {:.1}°, mean {:.1}°\n{}\nnet: {} vertices, {} quads; {} nodes\ndone in {:.1} s; wrote {target}/ (curves_<k>.obj, strips_<k>.obj, net.obj, nodes.csv, unrolled.svg, preview.svg, report.json)",
+            r.iterations,
+            if r.converged { ", converged" } else { "" },
+            r.intersection.min_degrees,
+            r.intersection.mean_degrees,
+            family_lines.join("\n"),
+            net.vertices.len(),
+            net.quads.len(),
+            nodes.len(),
+            started.elapsed().as_secs_f64()
+        ),
+    )?;
+    let mut missed: Vec<String> =
+        runs.iter().zip(&labels).filter(|(run, _)| !run.pattern.verdict.is_acceptable()).map(|(run, label)| format!("family {label}: {}", run.pattern.verdict.message())).collect();
+    if r.intersection.min_degrees < args.min_angle - MIN_ANGLE_SLACK_DEGREES {
+        missed.push(format!(
+            "the families cross at {:.1}° (below the minimum {:.1}° on {} faces); try a smaller --min-angle, other families or another start",
+            r.intersection.min_degrees, args.min_angle, r.intersection.faces_below_min
+        ));
+    }
+    if missed.is_empty() {
+        Ok(())
+    } else {
+        Err(CliError::NoAcceptableFamily(missed.join("; ")))
+    }
+}
+
+fn progress_line(r: &NetReport) -> String {
+    let errors: Vec<String> = r.families.iter().map(|f| format!("{:.3}° RMS", f.angle_error_rms_degrees)).collect();
+    format!("iteration {}: energy {:.3e}, angle errors {}, intersection min {:.1}°", r.iterations, r.total_energy, errors.join(" / "), r.intersection.min_degrees)
+}
+
+/// The name of strip `id` of family `k` in every output.
+fn net_strip_name(k: usize, id: usize) -> String {
+    format!("f{k}_strip_{id}")
+}
+
+/// Both families' strips in one pattern (for the preview).
+fn merged(runs: &[StripRun]) -> StripPattern {
+    let strips: Vec<_> = runs.iter().flat_map(|r| r.pattern.strips.iter().cloned()).collect();
+    let metrics = PatternMetrics::from_strips(strips.iter().map(|s| &s.metrics));
+    StripPattern { strips, skipped: Vec::new(), metrics, verdict: runs[0].pattern.verdict.clone() }
+}
+
+/// Every flat strip with a mark at each of its nodes, labelled with the crossing strip's name.
+fn cut_pieces<'a>(runs: &'a [StripRun], nodes: &[Node]) -> Vec<CutPiece<'a>> {
+    let mut pieces = Vec::new();
+    for (k, run) in runs.iter().enumerate() {
+        for (id, strip) in run.pattern.strips.iter().enumerate() {
+            let marks = nodes
+                .iter()
+                .filter(|n| n.strips[k] == id)
+                .filter_map(|n| flat_point(&strip.unrolling.centre, n.arc_lengths[k]).map(|at| CutMark { at, label: net_strip_name(1 - k, n.strips[1 - k]) }))
+                .collect();
+            pieces.push(CutPiece { name: net_strip_name(k, id), unrolling: &strip.unrolling, marks });
+        }
+    }
+    pieces
+}
+
+/// net.obj: the crossings as vertices, the quads as faces, rows and columns as `l` polylines.
+fn net_obj(net: &QuadNet) -> String {
+    let mut text = String::from("# lamella net: vertex (i, j) = crossing of level i of field 0 with level j of field 1\n");
+    for v in &net.vertices {
+        let _ = writeln!(text, "v {} {} {}", v.position.x, v.position.y, v.position.z);
+    }
+    for q in &net.quads {
+        let _ = writeln!(text, "f {} {} {} {}", q[0] + 1, q[1] + 1, q[2] + 1, q[3] + 1);
+    }
+    for (name, lines) in [("rows", &net.rows), ("columns", &net.columns)] {
+        let _ = writeln!(text, "o {name}");
+        for line in lines {
+            let indices: Vec<String> = line.iter().map(|v| (v + 1).to_string()).collect();
+            let _ = writeln!(text, "l {}", indices.join(" "));
+        }
+    }
+    text
+}
+
+/// nodes.csv: one row per node.
+fn nodes_csv(nodes: &[Node]) -> String {
+    let mut text = String::from("strip_0,strip_1,arc_length_0,arc_length_1,x,y,z,axis_x,axis_y,axis_z,ruling_angle_degrees\n");
+    for n in nodes {
+        let (p, a) = (n.position, n.axis);
+        let _ = writeln!(
+            text,
+            "{},{},{},{},{},{},{},{},{},{},{}",
+            net_strip_name(0, n.strips[0]),
+            net_strip_name(1, n.strips[1]),
+            n.arc_lengths[0],
+            n.arc_lengths[1],
+            p.x,
+            p.y,
+            p.z,
+            a.x,
+            a.y,
+            a.z,
+            n.ruling_angle_degrees
+        );
+    }
+    text
+}
+
+/// JSON has no NaN: non-finite numbers become null.
+fn number(x: f64) -> Value {
+    if x.is_finite() { json!(x) } else { Value::Null }
+}
+
+fn report_json(mesh: &str, labels: &[String], solver: &NetSolver, runs: &[StripRun], net: &QuadNet, nodes: &[Node], seconds: [f64; 3]) -> Value {
+    let r = solver.report();
+    let families: Vec<Value> = labels
+        .iter()
+        .zip(runs)
+        .zip(&r.families)
+        .map(|((label, run), f)| {
+            let m = &run.pattern.metrics;
+            json!({
+                "family": label,
+                "e_angle": number(f.energies.angle),
+                "e_fair": number(f.energies.fair),
+                "e_grad": number(f.energies.grad),
+                "angle_error_rms_degrees": number(f.angle_error_rms_degrees),
+                "angle_error_max_degrees": number(f.angle_error_max_degrees),
+                "singular_vertices": f.singular_vertices.len(),
+                "strips": run.pattern.strips.len(),
+                "strip_width_m": number(run.width),
+                "max_strip_plane_angle_error_degrees": number(m.max_quad_angle_error_degrees),
+                "acceptable": run.pattern.verdict.is_acceptable(),
+            })
+        })
+        .collect();
+    let ruling_angles: Vec<f64> = nodes.iter().map(|n| n.ruling_angle_degrees).collect();
+    let max_ruling = ruling_angles.iter().copied().fold(0.0, f64::max);
+    let mean_ruling = if ruling_angles.is_empty() { 0.0 } else { ruling_angles.iter().sum::<f64>() / ruling_angles.len() as f64 };
+    json!({
+        "mesh": mesh,
+        "iterations": r.iterations,
+        "converged": r.converged,
+        "families": families,
+        "intersection": {
+            "target_degrees": solver.params().intersection_degrees,
+            "min_asked_degrees": solver.params().min_intersection_degrees,
+            "min_degrees": number(r.intersection.min_degrees),
+            "mean_degrees": number(r.intersection.mean_degrees),
+            "faces_below_min": r.intersection.faces_below_min,
+        },
+        "net": { "vertices": net.vertices.len(), "quads": net.quads.len(), "rows": net.rows.len(), "columns": net.columns.len() },
+        "nodes": { "count": nodes.len(), "mean_ruling_angle_degrees": number(mean_ruling), "max_ruling_angle_degrees": number(max_ruling) },
+        "timings_seconds": { "field": seconds[0], "strips": seconds[1], "total": seconds[2] },
+    })
+}

@@ -1,0 +1,201 @@
+//! `LmlNet`: a net session of two families (paper Sec. 4.1), stepped like `LmlField`: create
+//! from two start fields, step until converged, read each field, free.
+
+use super::guard::guarded;
+use super::mesh::LmlMesh;
+use super::raw::{copy_out, handle, handle_mut, input, release, Out};
+use super::status::LmlStatus;
+use super::failure::Failure;
+use crate::field::{Family, FieldError};
+use crate::initialisation::{SearchError, SearchOptions};
+use crate::net::{net_start, NetParams, NetReport, NetSolver};
+
+/// A net optimisation session (opaque): a copy of the mesh, the two fields, their auxiliary
+/// variables and the solver state. Create it with `lml_net_new`, release it with `lml_net_free`.
+pub struct LmlNet {
+    solver: NetSolver,
+}
+
+/// The state of a net optimisation after `lml_net_step` (written by the library; the caller owns
+/// the struct). Angles in degrees; index 0 is the first field, 1 the second.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LmlNetReport {
+    /// Iterations run since the session was created.
+    pub iterations: u64,
+    /// 1 when the final stage has converged (further steps do nothing), else 0.
+    pub converged: u64,
+    /// RMS and maximum of each family's |θ_measured − θ| over its measured vertices.
+    pub angle_error_rms_degrees: [f64; 2],
+    pub angle_error_max_degrees: [f64; 2],
+    /// Singular vertices of each field.
+    pub singular_vertex_count: [u64; 2],
+    /// Smallest and area-weighted mean unsigned intersection angle of the two families over the faces.
+    pub min_intersection_degrees: f64,
+    pub mean_intersection_degrees: f64,
+    /// Faces where the families cross below the minimum angle.
+    pub faces_below_min: u64,
+    /// The weighted energy being minimised.
+    pub energy_total: f64,
+}
+
+impl From<&NetReport> for LmlNetReport {
+    fn from(r: &NetReport) -> LmlNetReport {
+        let family = |k: usize| r.families.get(k);
+        LmlNetReport {
+            iterations: r.iterations as u64,
+            converged: u64::from(r.converged),
+            angle_error_rms_degrees: [0, 1].map(|k| family(k).map_or(0.0, |f| f.angle_error_rms_degrees)),
+            angle_error_max_degrees: [0, 1].map(|k| family(k).map_or(0.0, |f| f.angle_error_max_degrees)),
+            singular_vertex_count: [0, 1].map(|k| family(k).map_or(0, |f| f.singular_vertices.len() as u64)),
+            min_intersection_degrees: r.intersection.min_degrees,
+            mean_intersection_degrees: r.intersection.mean_degrees,
+            faces_below_min: r.intersection.faces_below_min as u64,
+            energy_total: r.total_energy,
+        }
+    }
+}
+
+/// Starts a net optimisation of two families with the default weights.
+///
+/// - `mesh`: the surface (copied).
+/// - `theta_degrees_f`, `theta_degrees_g`: each family by its angle θ in [0°, 180°]: 0° and 180°
+///   asymptotic curves, 90° geodesics, others pseudo-geodesics of that signed angle.
+/// - `initial_fields`: `2 n` doubles, the first field's `n` values (one per vertex) then the
+///   second's; each not constant, finite, magnitude at most 1e100. Copied.
+/// - `min_intersection_degrees`: minimum intersection angle, in [0°, 90°) (30 by default in Rust).
+/// - `intersection_degrees`: target intersection angle in (0°, 180°) held as a weak term, or NaN
+///   for none.
+/// - `out`: receives the new session (release with `lml_net_free`); NULL on failure.
+///
+/// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `n` ≠ vertex count, a
+/// value out of range, naming it); `LML_STATUS_SINGULAR_FIELD` (a constant field).
+#[no_mangle]
+pub unsafe extern "C" fn lml_net_new(
+    mesh: *const LmlMesh,
+    theta_degrees_f: f64,
+    theta_degrees_g: f64,
+    initial_fields: *const f64,
+    n: usize,
+    min_intersection_degrees: f64,
+    intersection_degrees: f64,
+    out: *mut *mut LmlNet,
+) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (all blocks): the pointer contracts are those documented above.
+        let mut out = unsafe { Out::new(out, "out") }?;
+        out.set(std::ptr::null_mut());
+        let mesh = unsafe { handle(mesh, "mesh") }?;
+        if n != mesh.mesh.vertex_count() {
+            return Err(FieldError::FieldLength { expected: mesh.mesh.vertex_count(), actual: n }.into());
+        }
+        // 2 n cannot overflow: n is the vertex count of a mesh in memory.
+        let fields = unsafe { input(initial_fields, 2 * n, "initial_fields") }?;
+        let family = |theta: f64| Family::from_theta(theta);
+        let mut params = NetParams::new(family(theta_degrees_f), family(theta_degrees_g));
+        params.min_intersection_degrees = min_intersection_degrees;
+        params.intersection_degrees = (!intersection_degrees.is_nan()).then_some(intersection_degrees);
+        let (first, second) = fields.split_at(n);
+        out.set_owned(LmlNet { solver: NetSolver::new(&mesh.mesh, &[first.to_vec(), second.to_vec()], params)? });
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// The default start of a net (Rust `net_start`): the first family's winner of the default start
+/// search, then the second family's among the candidates crossing it at 45° or more on average;
+/// each field is where its short solve ended. Families by θ as in `lml_net_new`. Writes `2 n`
+/// doubles (the first field, then the second) to `fields` with the two-call pattern: `*needed`
+/// receives `2 n`; with `capacity` below it nothing is computed or copied and
+/// `LML_STATUS_BUFFER_TOO_SMALL` is returned (`fields` may be NULL then). Runs a few dozen short
+/// solves: seconds on meshes of thousands of vertices.
+///
+/// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL`, `LML_STATUS_INVALID_ARGUMENT` (NULL
+/// mesh or `needed`, θ or the minimum angle out of range, named) or `LML_STATUS_SINGULAR_FIELD`
+/// (no candidate leads to a family; the message gives every candidate's reason).
+#[no_mangle]
+pub unsafe extern "C" fn lml_net_start(
+    mesh: *const LmlMesh,
+    theta_degrees_f: f64,
+    theta_degrees_g: f64,
+    min_intersection_degrees: f64,
+    fields: *mut f64,
+    capacity: usize,
+    needed: *mut usize,
+) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (all blocks): live mesh handle; `fields` writable for `capacity` doubles; `needed` writable.
+        let mesh = unsafe { handle(mesh, "mesh") }?;
+        let mut params = NetParams::new(Family::from_theta(theta_degrees_f), Family::from_theta(theta_degrees_g));
+        params.min_intersection_degrees = min_intersection_degrees;
+        params.validate()?;
+        let n = mesh.mesh.vertex_count();
+        if capacity < 2 * n || fields.is_null() {
+            // Nothing to compute: report the size only.
+            return unsafe { copy_out(&vec![0.0; 2 * n], fields, capacity, needed, "fields") };
+        }
+        let started = net_start(&mesh.mesh, &params, &SearchOptions::default()).map_err(|e| match e {
+            SearchError::Field(error) => Failure::from(error),
+            other => Failure::new(LmlStatus::SingularField, other.to_string()),
+        })?;
+        let flat: Vec<f64> = started.concat();
+        unsafe { copy_out(&flat, fields, capacity, needed, "fields") }
+    })
+}
+
+/// Releases a session. NULL is accepted and ignored. The handle must not be used again.
+#[no_mangle]
+pub unsafe extern "C" fn lml_net_free(net: *mut LmlNet) {
+    guarded(|| {
+        // SAFETY: `net` is NULL or a live handle from lml_net_new.
+        unsafe { release(net) };
+        Ok(LmlStatus::Ok)
+    });
+}
+
+/// Runs at most `max_iterations` iterations and writes the state to `*report` (may be NULL).
+///
+/// Returns `LML_STATUS_MORE` (step again), `LML_STATUS_CONVERGED`, `LML_STATUS_INVALID_ARGUMENT`
+/// (NULL or misaligned pointer) or `LML_STATUS_DID_NOT_CONVERGE` (an iteration failed
+/// numerically; the fields keep their last good state).
+#[no_mangle]
+pub unsafe extern "C" fn lml_net_step(net: *mut LmlNet, max_iterations: u32, report: *mut LmlNetReport) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle used by this thread only; `report` NULL or writable.
+        let net = unsafe { handle_mut(net, "net") }?;
+        let report = unsafe { Out::optional(report, "report") }?;
+        let step = net.solver.step(usize::try_from(max_iterations).unwrap_or(usize::MAX))?;
+        if let Some(mut report) = report {
+            report.set(LmlNetReport::from(&step));
+        }
+        Ok(if step.converged { LmlStatus::Converged } else { LmlStatus::More })
+    })
+}
+
+/// Writes the state after the last step (or after creation) to `*report`.
+/// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+#[no_mangle]
+pub unsafe extern "C" fn lml_net_report(net: *const LmlNet, report: *mut LmlNetReport) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle; writable `report`.
+        let net = unsafe { handle(net, "net") }?;
+        unsafe { Out::new(report, "report") }?.set(LmlNetReport::from(net.solver.report()));
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// Copies field `k` (0 or 1; one value per vertex, in the scale of its start field) into
+/// `values` with the two-call pattern: `*needed` receives the vertex count; with `capacity`
+/// below it nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned (`values` may be
+/// NULL then). Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or
+/// `LML_STATUS_INVALID_ARGUMENT` (NULL net or `needed`, `k` > 1).
+#[no_mangle]
+pub unsafe extern "C" fn lml_net_field(net: *const LmlNet, k: u32, values: *mut f64, capacity: usize, needed: *mut usize) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle; `values` writable for `capacity` doubles; `needed` writable.
+        let net = unsafe { handle(net, "net") }?;
+        if k > 1 {
+            return Err(Failure::new(LmlStatus::InvalidArgument, format!("k: a net has fields 0 and 1, got {k}")));
+        }
+        unsafe { copy_out(&net.solver.field(k as usize), values, capacity, needed, "values") }
+    })
+}

@@ -1,0 +1,288 @@
+//! The stepwise net optimiser (Sec. 4.1): two fields optimised together, each toward its family
+//! (Eq. 12), crossing at a controlled angle. Stepped like [`crate::field::FieldSolver`].
+
+use super::intersection::{self, IntersectionTerm};
+use super::params::NetParams;
+use super::problem::NetProblem;
+use super::report::{IntersectionReport, NetReport};
+use crate::field::auxiliaries::{initialize_auxiliaries, reorient_side_vectors};
+use crate::field::{problem_frames, stage_weights, FieldError, StepReport, Weights, SETTLING_ITERATIONS};
+use crate::mesh::TriMesh;
+use crate::solver::{LeastSquaresProblem, LevenbergMarquardt};
+
+/// Optimises two fields on one mesh so that their level sets form a net of the requested families.
+///
+/// As [`crate::field::FieldSolver`], it works on a copy of the mesh scaled to mean edge length 1,
+/// each field scaled to mean `‖∇‖` 1; values handed back are in the caller's units.
+pub struct NetSolver {
+    problem: NetProblem,
+    lm: LevenbergMarquardt,
+    params: NetParams,
+    x: Vec<f64>,
+    /// Internal field `k` = caller field `k` × `field_scales[k]`; internal lengths = caller × `length_scale`.
+    field_scales: Vec<f64>,
+    length_scale: f64,
+    stage: usize,
+    stage_iterations: usize,
+    slow_iterations: usize,
+    iterations: usize,
+    converged: bool,
+    last_report: NetReport,
+}
+
+impl NetSolver {
+    /// Prepares the optimisation of `fields` (one per family of `params`, one value per vertex)
+    /// on `mesh`. A target intersection angle γ is read in the orientation the start fields
+    /// have: of `±γ` and `±(180° − γ)`, the oriented angle nearest to their mean one.
+    /// Errors: `InvalidParameter` naming the parameter, `FieldLength`, `NonFiniteValue`,
+    /// `ValueOutOfRange` or `ConstantField` for a field (the first one found).
+    pub fn new(mesh: &TriMesh, fields: &[Vec<f64>], mut params: NetParams) -> Result<NetSolver, FieldError> {
+        params.validate()?;
+        params.families.iter_mut().for_each(|f| *f = f.by_name());
+        if fields.len() != params.families.len() {
+            return Err(FieldError::InvalidParameter { name: "fields", message: format!("{} families need as many fields, got {}", params.families.len(), fields.len()) });
+        }
+        for field in fields {
+            crate::field::validate_field(mesh, field)?;
+        }
+        let (unit_mesh, length_scale) = mesh.unit_scaled();
+        let mut field_scales = Vec::with_capacity(fields.len());
+        for field in fields {
+            let gradient = crate::field::mean_gradient_norm(&unit_mesh, field);
+            if !(gradient > 0.0 && gradient.is_finite()) {
+                return Err(FieldError::ConstantField);
+            }
+            field_scales.push(1.0 / gradient);
+        }
+        let term = intersection_term(&unit_mesh, fields, &params);
+        let (stage, weights) = stage_weights(&params.field, 0);
+        let problem = NetProblem::new(&unit_mesh, &params.families, weights, term);
+        let lm = LevenbergMarquardt::new(&problem, params.field.lm.clone())?;
+        let mut x = vec![0.0; problem.variable_count()];
+        for (k, (field, scale)) in fields.iter().zip(&field_scales).enumerate() {
+            let start = problem.field_start(k);
+            x[start..start + field.len()].iter_mut().zip(field).for_each(|(x, f)| *x = f * scale);
+        }
+        for (k, field) in problem.fields().iter().enumerate() {
+            initialize_auxiliaries(field, &mut x[problem.field_start(k)..]);
+        }
+        let mut solver = NetSolver {
+            problem,
+            lm,
+            params,
+            x,
+            field_scales,
+            length_scale,
+            stage,
+            stage_iterations: 0,
+            slow_iterations: 0,
+            iterations: 0,
+            converged: false,
+            last_report: NetReport::default(),
+        };
+        solver.last_report = solver.measure(0, 0);
+        Ok(solver)
+    }
+
+    /// Runs at most `max_iterations` Levenberg–Marquardt iterations and reports the state.
+    pub fn step(&mut self, max_iterations: usize) -> Result<NetReport, FieldError> {
+        rayon::scope(|_| self.run(max_iterations))
+    }
+
+    fn run(&mut self, max_iterations: usize) -> Result<NetReport, FieldError> {
+        let mut ran = 0;
+        let mut flips = 0;
+        while ran < max_iterations && !self.converged {
+            flips += self.reorient_side_vectors();
+            let damping_before = self.lm.damping();
+            let outcome = self.lm.iterate(&self.problem, &mut self.x).map_err(FieldError::Solver)?;
+            ran += 1;
+            self.iterations += 1;
+            self.stage_iterations += 1;
+            let decrease = outcome.energy_before - outcome.energy_after;
+            // As in the single-field solver: a step the damping held back (its gain was so good
+            // that μ fell by half or more) does not count as slow.
+            if decrease <= self.params.field.relative_tolerance * outcome.energy_before && (!outcome.accepted || outcome.damping > 0.5 * damping_before) {
+                self.slow_iterations += 1;
+            } else {
+                self.slow_iterations = 0;
+            }
+            let settled = outcome.converged.is_some() || !outcome.accepted || self.slow_iterations >= SETTLING_ITERATIONS;
+            if self.stage == self.params.field.schedule.len() {
+                self.converged = settled;
+            } else if settled || self.stage_iterations >= self.params.field.schedule[self.stage].iterations {
+                self.enter_stage(self.stage + 1);
+            }
+        }
+        self.last_report = self.measure(ran, flips);
+        Ok(self.last_report.clone())
+    }
+
+    /// The report of the last `step` (or of the initial state).
+    pub fn report(&self) -> &NetReport {
+        &self.last_report
+    }
+
+    /// Field `k`'s current values, one per vertex, in the scale of its initial field.
+    /// Panics if `k` is not below the family count.
+    pub fn field(&self, k: usize) -> Vec<f64> {
+        let start = self.problem.field_start(k);
+        self.x[start..start + self.vertex_count()].iter().map(|f| f / self.field_scales[k]).collect()
+    }
+
+    /// Every field, in order.
+    pub fn fields(&self) -> Vec<Vec<f64>> {
+        (0..self.params.families.len()).map(|k| self.field(k)).collect()
+    }
+
+    /// The mesh in the caller's units.
+    pub fn mesh(&self) -> TriMesh {
+        self.problem.mesh().scaled(1.0 / self.length_scale)
+    }
+
+    pub fn params(&self) -> &NetParams {
+        &self.params
+    }
+
+    pub fn iterations(&self) -> usize {
+        self.iterations
+    }
+
+    pub fn is_converged(&self) -> bool {
+        self.converged
+    }
+
+    /// Replaces the remaining schedule by constant `weights` (every field's), held until convergence.
+    pub fn set_weights(&mut self, weights: Weights) -> Result<(), FieldError> {
+        let mut params = self.params.clone();
+        params.field.schedule.clear();
+        params.field.weights = weights;
+        params.validate()?;
+        self.params = params;
+        self.enter_stage(0);
+        Ok(())
+    }
+
+    fn vertex_count(&self) -> usize {
+        self.problem.mesh().vertex_count()
+    }
+
+    fn enter_stage(&mut self, stage: usize) {
+        let (stage, weights) = stage_weights(&self.params.field, stage);
+        (self.stage, self.stage_iterations, self.slow_iterations, self.converged) = (stage, 0, 0, false);
+        self.problem.set_weights(weights);
+        self.lm.reset_damping();
+    }
+
+    /// The orientation test of Sec. 3.2.2 for every pseudo-geodesic field.
+    fn reorient_side_vectors(&mut self) -> usize {
+        let mut flips = 0;
+        for (k, field) in self.problem.fields().iter().enumerate() {
+            let view = &mut self.x[self.problem.field_start(k)..];
+            let frames = problem_frames(field, view);
+            flips += reorient_side_vectors(field, view, &frames);
+        }
+        flips
+    }
+
+    fn measure(&self, iterations_this_step: usize, flips: usize) -> NetReport {
+        let families: Vec<StepReport> = self
+            .problem
+            .fields()
+            .iter()
+            .enumerate()
+            .map(|(k, field)| {
+                let view = &self.x[self.problem.field_start(k)..];
+                StepReport::measure(field, view, None, &problem_frames(field, view))
+            })
+            .collect();
+        let intersection = self.measure_intersection();
+        let total_energy = LevenbergMarquardt::evaluate_energy(&self.problem, &self.x);
+        NetReport {
+            iterations: self.iterations,
+            iterations_this_step,
+            stage: self.stage,
+            families: families.into_iter().map(|r| StepReport { iterations: self.iterations, iterations_this_step, stage: self.stage, flips, damping: self.lm.damping(), converged: self.converged, ..r }).collect(),
+            intersection,
+            total_energy,
+            damping: self.lm.damping(),
+            converged: self.converged,
+        }
+    }
+
+    fn measure_intersection(&self) -> IntersectionReport {
+        let mesh = self.problem.mesh();
+        let n = self.vertex_count();
+        let (f_field, g_field) = (&self.x[..n], &self.x[n..2 * n]);
+        let unit = IntersectionTerm { target_weight: 1.0, min_weight: 1.0, ..*self.problem.intersection() };
+        let mut report = IntersectionReport { min_degrees: 90.0, ..IntersectionReport::default() };
+        let (mut weighted, mut area) = (0.0, 0.0);
+        let mut residuals = [0.0; intersection::ROWS];
+        for (f, angle) in intersection::intersection_angles(mesh, f_field, g_field).into_iter().enumerate() {
+            let Some(angle) = angle else { continue };
+            report.min_degrees = report.min_degrees.min(angle);
+            weighted += angle * mesh.face_areas()[f];
+            area += mesh.face_areas()[f];
+            if angle < self.params.min_intersection_degrees {
+                report.faces_below_min += 1;
+            }
+            residuals.fill(0.0);
+            intersection::evaluate(mesh, &unit, f_field, g_field, f, &mut residuals, None);
+            if self.params.intersection_degrees.is_some() {
+                report.target_energy += residuals[0] * residuals[0] + residuals[1] * residuals[1];
+            }
+            report.min_energy += residuals[2] * residuals[2];
+        }
+        report.mean_degrees = if area > 0.0 { weighted / area } else { 0.0 };
+        report
+    }
+}
+
+/// The intersection term of `params` for the start `fields`: a target angle oriented as the
+/// fields' mean oriented angle is (see [`NetSolver::new`]).
+fn intersection_term(mesh: &TriMesh, fields: &[Vec<f64>], params: &NetParams) -> IntersectionTerm {
+    let min_sine = params.min_intersection_degrees.to_radians().sin();
+    let target = match (params.intersection_degrees, intersection::mean_orientation(mesh, &fields[0], &fields[1])) {
+        (Some(gamma), mean) => {
+            let (c, s) = mean.unwrap_or((0.0, 1.0));
+            let (sin, cos) = gamma.to_radians().sin_cos();
+            let choices = [(cos, sin), (cos, -sin), (-cos, sin), (-cos, -sin)];
+            // The first of the nearest choices (a strict comparison keeps the order's tie-break).
+            choices.into_iter().fold((f64::NEG_INFINITY, (cos, sin)), |best, t| {
+                let agreement = t.0 * c + t.1 * s;
+                if agreement > best.0 { (agreement, t) } else { best }
+            }).1
+        }
+        (None, _) => (0.0, 1.0),
+    };
+    let target_weight = if params.intersection_degrees.is_some() { params.intersection_weight } else { 0.0 };
+    IntersectionTerm { target, target_weight, min_sine, min_weight: params.min_intersection_weight }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::field::Family;
+    use crate::solver::check_block_jacobian;
+    use crate::surfaces::hall_roof;
+
+    #[test]
+    fn every_block_of_a_net_has_the_jacobian_of_its_residuals() {
+        let mesh = hall_roof(150).into_mesh().expect("roof");
+        let f: Vec<f64> = mesh.positions().iter().map(|p| p.x + 0.1 * p.y * p.y).collect();
+        let g: Vec<f64> = mesh.positions().iter().map(|p| p.y - 0.05 * p.x * p.x).collect();
+        let theta = Family::PseudoGeodesic { theta_degrees: 60.0 };
+        let mut params = NetParams::new(theta, theta);
+        params.min_intersection_degrees = 89.0;
+        params.intersection_degrees = Some(80.0);
+        let solver = NetSolver::new(&mesh, &[f, g], params).expect("solver");
+        let mut worst = (0.0, 0);
+        for b in 0..solver.problem.block_count() {
+            let error = check_block_jacobian(&solver.problem, &solver.x, b, 1e-6);
+            if error > worst.0 {
+                worst = (error, b);
+            }
+        }
+        assert!(worst.0 < 1e-4, "block {} of {}: {}", worst.1, solver.problem.block_count(), worst.0);
+    }
+}
