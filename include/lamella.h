@@ -1479,7 +1479,8 @@ LmlStatus lml_stock_default(double length,
                             struct LmlStock *out);
 
 // Checks and cuts the strips of `strips` (named `strip_<i>`, as in the CLI's files) in
-// `material` of `thickness`, from `stock`.
+// `material` of `thickness`, from `stock`. The bill of materials gives every piece the family
+// and θ the strips were built for (`LmlStripParams::theta_degrees`).
 //
 // Returns `LML_STATUS_OK` (also when strips are over 100 % utilisation: see `overstressed`),
 // or `LML_STATUS_INVALID_ARGUMENT` (NULL pointer; a material constant, the thickness or a stock

@@ -111,3 +111,60 @@ fn a_net_crossing_below_the_minimum_angle_exits_3_and_says_where() {
         assert!(stderr(&output).contains(&format!("the families cross at {min:.1}°")), "{}", stderr(&output));
     }
 }
+
+#[test]
+fn a_net_with_a_material_writes_workshop_files_for_both_families_with_the_nodes() {
+    let dir = Scratch::new("net-fabrication");
+    let mesh = hypar_obj(&dir);
+    let args = ["net", "--mesh", mesh.to_str().expect("path"), "--families", "A,A", "--lines", "6", "--width", "0.12", "--material", "plywood", "--thickness", "4mm", "--stock", "4m", "--out", "out", "--quiet"];
+    let output = lamella(&dir.0, &args);
+    let code = output.status.code();
+    assert!(code == Some(0) || code == Some(3), "exit {code:?}: {}", stderr(&output));
+    let out = dir.path("out");
+    for name in ["cut.dxf", "cut.svg", "bom.csv", "utilisation.svg"] {
+        assert!(out.join(name).is_file(), "{name} missing");
+    }
+    // Nodes per strip, from nodes.csv: (strip name, arc length along it).
+    let nodes_csv = std::fs::read_to_string(out.join("nodes.csv")).expect("nodes.csv");
+    let mut nodes: Vec<(String, f64)> = Vec::new();
+    for line in nodes_csv.lines().skip(1) {
+        let cells: Vec<&str> = line.split(',').collect();
+        nodes.push((cells[0].to_string(), cells[2].parse().expect("arc length")));
+        nodes.push((cells[1].to_string(), cells[3].parse().expect("arc length")));
+    }
+    assert!(nodes.len() >= 2 * 16, "{} node ends", nodes.len());
+    // The bill of materials covers both families, each with its own θ (asymptotic: 0°), and the
+    // pieces of a strip chain along it with 0.3 m overlaps that hold no node.
+    let bom = std::fs::read_to_string(out.join("bom.csv")).expect("bom.csv");
+    let rows: Vec<Vec<String>> = bom.lines().skip(1).map(|l| l.split(',').map(str::to_string).collect()).collect();
+    for k in 0..2 {
+        assert!(rows.iter().any(|r| r[1].starts_with(&format!("f{k}_strip_"))), "no piece of family {k}");
+    }
+    assert!(rows.iter().all(|r| r[2] == "asymptotic" && r[3].parse::<f64>() == Ok(0.0)), "{bom}");
+    let overlap = 0.3;
+    let mut spliced = 0;
+    let mut start = 0.0;
+    for (i, row) in rows.iter().enumerate() {
+        let length: f64 = row[4].parse().expect("length");
+        assert!(length <= 4.0 + 1e-9, "{} is {length} m long", row[0]);
+        let end = start + length;
+        let continues = rows.get(i + 1).is_some_and(|next| next[1] == row[1]);
+        if continues {
+            spliced += 1;
+            let inside: Vec<f64> = nodes.iter().filter(|(s, a)| *s == row[1] && *a >= end - overlap && *a <= end).map(|n| n.1).collect();
+            assert!(inside.is_empty(), "the splice of {} over [{:.3}, {end:.3}] m holds nodes at {inside:?}", row[0], end - overlap);
+            start = end - overlap;
+        } else {
+            start = 0.0;
+        }
+    }
+    assert!(spliced >= 4, "only {spliced} splices: the strips should outgrow 4 m boards");
+    // Every node is marked on both of its strips: a circle on the MARKS layer each (or two where
+    // it falls in a splice's overlap).
+    let dxf = std::fs::read_to_string(out.join("cut.dxf")).expect("cut.dxf");
+    let lines: Vec<&str> = dxf.lines().map(str::trim).collect();
+    let circles = lines.windows(4).filter(|w| w[0] == "0" && w[1] == "CIRCLE" && w[2] == "8" && w[3] == "MARKS").count();
+    assert!(circles >= nodes.len(), "{circles} node marks for {} node ends", nodes.len());
+    let report = read_json(&out.join("report.json"));
+    assert_eq!(report["fabrication"]["pieces"].as_array().map(Vec::len), Some(rows.len()));
+}

@@ -199,7 +199,7 @@ mod tests {
                 (t * (h / q) + b * (r / q)).normalize() * 0.05
             })
             .collect();
-        let strip = FabricationStrip { name: "helix".into(), centre, offsets, nodes: vec![] };
+        let strip = FabricationStrip { name: "helix".into(), centre, offsets, nodes: vec![], theta_degrees: None };
         strip.validate(0).expect("valid strip");
         let steel = Material::preset("steel").expect("preset");
         let check = check_strip(&strip, &steel, 0.002);

@@ -1,5 +1,5 @@
 //! The bill of materials: one row per piece, as CSV (bom.csv) and as rows for reports.
-use super::plan::FabricationPlan;
+use super::plan::{family_name, FabricationPlan};
 use std::fmt::Write as _;
 
 /// One row of the bill of materials.
@@ -36,8 +36,8 @@ pub fn bom_rows(plan: &FabricationPlan) -> Vec<BomRow> {
         .map(|p| BomRow {
             id: p.id.clone(),
             strip: plan.strip_names[p.strip].clone(),
-            family: plan.params.family_name(),
-            theta_degrees: plan.params.theta_degrees,
+            family: family_name(plan.strip_thetas[p.strip]),
+            theta_degrees: plan.strip_thetas[p.strip],
             length: p.length(),
             width: p.width,
             min_bending_radius: p.min_bending_radius,

@@ -32,7 +32,7 @@ pub use error::FabricationError;
 pub use material::{Material, PRESET_NAMES};
 pub use packing::Placement;
 pub use piece::{FlatShape, Label, CHARACTER_WIDTH};
-pub use plan::{plan_fabrication, FabricationParams, FabricationPlan, Piece, Stock};
+pub use plan::{family_name, plan_fabrication, FabricationParams, FabricationPlan, Piece, Stock};
 pub use sheet::{sheet, utilisation_rgb, Item, Layer, Sheet, MM};
 pub use strip_input::FabricationStrip;
 pub use svg::cut_svg;

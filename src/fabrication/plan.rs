@@ -83,14 +83,15 @@ impl FabricationParams {
         }
     }
 
-    /// The family's name by θ (`asymptotic`, `geodesic`, `pseudo-geodesic`), `None` when θ is unknown.
-    pub fn family_name(&self) -> Option<&'static str> {
-        self.theta_degrees.map(|theta| match Family::from_theta(theta) {
-            Family::Asymptotic => "asymptotic",
-            Family::Geodesic => "geodesic",
-            Family::PseudoGeodesic { .. } => "pseudo-geodesic",
-        })
-    }
+}
+
+/// The name of the family of θ (`asymptotic`, `geodesic`, `pseudo-geodesic`), `None` when θ is unknown.
+pub fn family_name(theta_degrees: Option<f64>) -> Option<&'static str> {
+    theta_degrees.map(|theta| match Family::from_theta(theta) {
+        Family::Asymptotic => "asymptotic",
+        Family::Geodesic => "geodesic",
+        Family::PseudoGeodesic { .. } => "pseudo-geodesic",
+    })
 }
 
 /// One piece of the plan: which strip, where along it, how it bends, where it lies.
@@ -147,6 +148,8 @@ pub struct FabricationPlan {
     pub params: FabricationParams,
     /// The strips' names, in input order.
     pub strip_names: Vec<String>,
+    /// Each strip's θ in degrees (its own, else the parameters'), in input order.
+    pub strip_thetas: Vec<Option<f64>>,
     /// One check per strip, in input order.
     pub checks: Vec<StripCheck>,
     /// The pieces, strip by strip, in order along each strip.
@@ -209,7 +212,15 @@ pub fn plan_fabrication(strips: &[FabricationStrip], params: &FabricationParams)
     for (piece, placement) in pieces.iter_mut().zip(placements) {
         piece.placement = placement;
     }
-    Ok(FabricationPlan { params: params.clone(), strip_names: strips.iter().map(|s| s.name.clone()).collect(), checks, pieces, boards, board_size })
+    Ok(FabricationPlan {
+        params: params.clone(),
+        strip_names: strips.iter().map(|s| s.name.clone()).collect(),
+        strip_thetas: strips.iter().map(|s| s.theta_degrees.or(params.theta_degrees)).collect(),
+        checks,
+        pieces,
+        boards,
+        board_size,
+    })
 }
 
 /// The pieces of every strip for pieces of at most `usable` metres of centre line.

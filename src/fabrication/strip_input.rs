@@ -20,6 +20,9 @@ pub struct FabricationStrip {
     /// Arc-length positions (from the centre line's start, metres) of nodes that splices must
     /// avoid (crossings with another family, holes); empty when the strips are not part of a net.
     pub nodes: Vec<f64>,
+    /// θ of the strip's own family in degrees, for a plan of several families (a net's);
+    /// `None`: the plan's [`super::FabricationParams::theta_degrees`].
+    pub theta_degrees: Option<f64>,
 }
 
 impl FabricationStrip {
@@ -28,7 +31,7 @@ impl FabricationStrip {
     pub fn from_boundaries(name: &str, left: &[Vec3], right: &[Vec3]) -> FabricationStrip {
         let centre = left.iter().zip(right).map(|(l, r)| (l + r) * 0.5).collect();
         let offsets = left.iter().zip(right).map(|(l, r)| (l - r) * 0.5).collect();
-        FabricationStrip { name: name.to_string(), centre, offsets, nodes: Vec::new() }
+        FabricationStrip { name: name.to_string(), centre, offsets, nodes: Vec::new(), theta_degrees: None }
     }
 
     /// A strip of a computed pattern, by its boundaries (so that it matches strips.obj bit for bit).
@@ -59,6 +62,9 @@ impl FabricationStrip {
         }
         if let Some(k) = self.nodes.iter().position(|s| !s.is_finite()) {
             return Err(bad(format!("node {k} is not finite")));
+        }
+        if let Some(theta) = self.theta_degrees.filter(|t| !(0.0..=180.0).contains(t)) {
+            return Err(bad(format!("θ must lie in [0°, 180°], got {theta}")));
         }
         Ok(())
     }

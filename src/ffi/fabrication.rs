@@ -156,7 +156,8 @@ pub unsafe extern "C" fn lml_stock_default(length: f64, out: *mut LmlStock) -> L
 }
 
 /// Checks and cuts the strips of `strips` (named `strip_<i>`, as in the CLI's files) in
-/// `material` of `thickness`, from `stock`.
+/// `material` of `thickness`, from `stock`. The bill of materials gives every piece the family
+/// and θ the strips were built for (`LmlStripParams::theta_degrees`).
 ///
 /// Returns `LML_STATUS_OK` (also when strips are over 100 % utilisation: see `overstressed`),
 /// or `LML_STATUS_INVALID_ARGUMENT` (NULL pointer; a material constant, the thickness or a stock
@@ -174,7 +175,8 @@ pub unsafe extern "C" fn lml_fabrication_new(
         // SAFETY (all blocks): writable `out`; live `strips`; readable `material` and `stock`.
         let mut out = unsafe { Out::new(out, "out") }?;
         out.set(std::ptr::null_mut());
-        let pattern = &unsafe { handle(strips, "strips") }?.pattern;
+        let strips = unsafe { handle(strips, "strips") }?;
+        let pattern = &strips.pattern;
         let m = unsafe { handle(material, "material") }?;
         let s = unsafe { handle(stock, "stock") }?;
         let width = if s.width == 0.0 { None } else { Some(s.width) };
@@ -182,7 +184,7 @@ pub unsafe extern "C" fn lml_fabrication_new(
             material: Material { name: "custom".into(), youngs_modulus: m.youngs_modulus, shear_modulus: m.shear_modulus, allowable_stress: m.allowable_stress },
             thickness,
             stock: Stock { length: s.length, width, overlap: s.overlap, gap: s.gap },
-            theta_degrees: None,
+            theta_degrees: Some(strips.theta_degrees),
         };
         let input: Vec<FabricationStrip> = pattern.strips.iter().enumerate().map(|(i, s)| FabricationStrip::from_rectifying(&format!("strip_{i}"), s)).collect();
         let plan = plan_fabrication(&input, &params)?;

@@ -24,6 +24,8 @@ use crate::strips::{rectifying_strips, RectifyingStrip, StripPattern};
 /// both vertex arrays. Three offset tables (points, vertices, quads) cut the arrays per strip.
 pub struct LmlStrips {
     pub(crate) pattern: StripPattern,
+    /// θ of the strips' family in degrees (from their parameters), for the bill of materials.
+    pub(crate) theta_degrees: f64,
 }
 
 /// Builds a rectifying strip on every polyline of `curves` (in parallel; the result does not
@@ -63,7 +65,7 @@ pub unsafe extern "C" fn lml_strips_new(curves: *const LmlCurves, params: *const
             set_last_error(&pattern.verdict.message());
             LmlStatus::NoAcceptableFamily
         };
-        out.set_owned(LmlStrips { pattern });
+        out.set_owned(LmlStrips { pattern, theta_degrees: params.theta_degrees });
         Ok(status)
     })
 }

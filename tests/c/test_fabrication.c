@@ -219,6 +219,8 @@ static void check_plan(const LmlStrips *strips, const LmlFabrication *fabricatio
     csv = text_of(fabrication, LML_FABRICATION_TEXT_BOM_CSV, 0);
     if (csv != NULL) {
         CHECK(occurrences(csv, "\n") == summary.pieces + 1);
+        /* The strips were built for θ = 60°: every row names their family and θ. */
+        CHECK(occurrences(csv, ",pseudo-geodesic,60.000000,") == summary.pieces);
     }
     CHECK_STATUS(lml_fabrication_text(fabrication, LML_FABRICATION_TEXT_PIECE_ID, summary.pieces, NULL, 0, &needed), LML_STATUS_INVALID_ARGUMENT);
     CHECK_MESSAGE("index");

@@ -20,7 +20,7 @@ pub fn helix_strip(name: &str, r: f64, h: f64, turn: f64, samples: usize, width:
             darboux * (0.5 * width / t.cross(&darboux).norm())
         })
         .collect();
-    FabricationStrip { name: name.to_string(), centre, offsets, nodes: vec![] }
+    FabricationStrip { name: name.to_string(), centre, offsets, nodes: vec![], theta_degrees: None }
 }
 
 /// The helix's centre-line length `turn √(r² + h²)`.

@@ -372,6 +372,9 @@ pub struct NetArgs {
     /// Largest strip-plane angle error (degrees) of an acceptable family; above it the command exits 3.
     #[arg(long, value_name = "DEGREES", default_value_t = 2.0)]
     pub tolerance: f64,
+    /// The workshop files of both families' strips, with the nodes marked and kept clear of splices.
+    #[command(flatten)]
+    pub fabrication: Box<FabricationFlags>,
     #[command(flatten)]
     pub out: OutArgs,
     #[command(flatten)]

@@ -1,10 +1,13 @@
 //! `lamella net`: a gridshell net of two curve families (paper Sec. 4.1): two fields optimised
 //! together from the default start, their level curves and rectifying strips per family, the
-//! quad net of their crossings and the nodes where strips cross; exit 3 when a family's strips
-//! miss their angle (as `design`).
+//! quad net of their crossings and the nodes where strips cross, and with the fabrication flags
+//! the workshop files of both families (nodes marked, splices kept away from them); exit 3 when
+//! a family's strips miss their angle (as `design`) or the families cross below the minimum.
 use crate::args::NetArgs;
 use crate::config::DEFAULT_OUT;
+use crate::console::err_line;
 use crate::error::{CliError, CliResult};
+use crate::fabrication_files::{self, cli_error, overstress_warning, report_section, summary_line};
 use crate::mesh_input::{load_mesh, mesh_name};
 use crate::output_dir::OutputDir;
 use crate::progress::{note, summary, Verbosity};
@@ -12,6 +15,7 @@ use crate::strip_obj::{curves_obj, strips_obj};
 use crate::strips_cmd::{build_strips, StripRun};
 use crate::svg::cut_sheet::{cut_sheet_svg, CutMark, CutPiece};
 use crate::svg::preview::preview_svg;
+use lamella::fabrication::{plan_fabrication, FabricationStrip};
 use lamella::field::Family;
 use lamella::initialisation::SearchOptions;
 use lamella::net::{flat_point, net_nodes, quad_net_at, NetParams, NetReport, NetSolver, Node, QuadNet};
@@ -70,6 +74,7 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
     params.intersection_degrees = args.angle;
     params.min_intersection_degrees = args.min_angle;
     params.validate().map_err(|e| CliError::bad_input(format!("net: {e}")))?;
+    let fabrication = fabrication_files::requested(&args.fabrication).then(|| fabrication_files::params(&args.fabrication, None)).transpose()?;
     let mesh = load_mesh(args.mesh.mesh.as_deref())?;
     let name = mesh_name(args.mesh.mesh.as_deref());
     let target: PathBuf = args.out.out.clone().unwrap_or_else(|| PathBuf::from(DEFAULT_OUT));
@@ -111,10 +116,27 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
     out.write("nodes.csv", nodes_csv(&nodes))?;
     out.write("unrolled.svg", cut_sheet_svg(&cut_pieces(&runs, &nodes)))?;
     out.write("preview.svg", preview_svg(&mesh, &merged(&runs)))?;
-    let report = report_json(&name, &labels, &solver, &runs, &net, &nodes, [field_seconds, strips_seconds, started.elapsed().as_secs_f64()]);
+    let plan = match fabrication {
+        Some(params) => {
+            let plan = plan_fabrication(&fabrication_strips(&families, &runs, &nodes), &params).map_err(cli_error)?;
+            let boundaries: Vec<(&[_], &[_])> = runs.iter().flat_map(|r| r.pattern.strips.iter().map(|s| (s.left.as_slice(), s.right.as_slice()))).collect();
+            fabrication_files::write_files(&out, &plan, &boundaries, Some(&mesh))?;
+            Some(plan)
+        }
+        None => None,
+    };
+    let mut report = report_json(&name, &labels, &solver, &runs, &net, &nodes, [field_seconds, strips_seconds, started.elapsed().as_secs_f64()]);
+    if let (Some(plan), Some(root)) = (&plan, report.as_object_mut()) {
+        root.insert("fabrication".into(), report_section(plan));
+    }
     out.write("report.json", serde_json::to_string_pretty(&report).map_err(|e| CliError::internal(format!("report.json: {e}")))?)?;
     let target = out.target().display().to_string();
     out.commit()?;
+    if let Some(warning) = plan.as_ref().and_then(overstress_warning) {
+        if verbosity != Verbosity::Quiet {
+            err_line(format!("lamella: warning: {warning}"));
+        }
+    }
     let r = solver.report();
     let family_lines: Vec<String> = runs
         .iter()
@@ -124,7 +146,7 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
     summary(
         verbosity,
         &format!(
-            "{} iterations{}; intersection angle min {:.1}°, mean {:.1}°\n{}\nnet: {} vertices, {} quads; {} nodes\ndone in {:.1} s; wrote {target}/ (curves_<k>.obj, strips_<k>.obj, net.obj, nodes.csv, unrolled.svg, preview.svg, report.json)",
+            "{} iterations{}; intersection angle min {:.1}°, mean {:.1}°\n{}\nnet: {} vertices, {} quads; {} nodes\n{}done in {:.1} s; wrote {target}/ (curves_<k>.obj, strips_<k>.obj, net.obj, nodes.csv, unrolled.svg, preview.svg, report.json{})",
             r.iterations,
             if r.converged { ", converged" } else { "" },
             r.intersection.min_degrees,
@@ -133,7 +155,9 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
             net.vertices.len(),
             net.quads.len(),
             nodes.len(),
-            started.elapsed().as_secs_f64()
+            plan.as_ref().map_or(String::new(), |p| format!("{}\n", summary_line(p))),
+            started.elapsed().as_secs_f64(),
+            if plan.is_some() { format!(", {}", fabrication_files::FILES) } else { String::new() }
         ),
     )?;
     let mut missed: Vec<String> =
@@ -166,6 +190,21 @@ fn merged(runs: &[StripRun]) -> StripPattern {
     let strips: Vec<_> = runs.iter().flat_map(|r| r.pattern.strips.iter().cloned()).collect();
     let metrics = PatternMetrics::from_strips(strips.iter().map(|s| &s.metrics));
     StripPattern { strips, skipped: Vec::new(), metrics, verdict: runs[0].pattern.verdict.clone() }
+}
+
+/// Both families' strips for the workshop, named as in every output, each with its family's θ and
+/// the arc lengths of its nodes (which splices avoid and the cut files mark).
+fn fabrication_strips(families: &[Family], runs: &[StripRun], nodes: &[Node]) -> Vec<FabricationStrip> {
+    let mut strips = Vec::new();
+    for (k, (family, run)) in families.iter().zip(runs).enumerate() {
+        for (id, strip) in run.pattern.strips.iter().enumerate() {
+            let mut input = FabricationStrip::from_rectifying(&net_strip_name(k, id), strip);
+            input.nodes = nodes.iter().filter(|n| n.strips[k] == id).map(|n| n.arc_lengths[k]).collect();
+            input.theta_degrees = Some(family.theta_degrees());
+            strips.push(input);
+        }
+    }
+    strips
 }
 
 /// Every flat strip with a mark at each of its nodes, labelled with the crossing strip's name.
