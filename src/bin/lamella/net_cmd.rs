@@ -12,6 +12,7 @@ use crate::strip_obj::{curves_obj, strips_obj};
 use crate::strips_cmd::{build_strips, StripRun};
 use crate::svg::cut_sheet::{cut_sheet_svg, CutMark, CutPiece};
 use crate::svg::preview::preview_svg;
+use crate::view_cmd::write_view;
 use lamella::field::Family;
 use lamella::initialisation::SearchOptions;
 use lamella::net::{flat_point, net_nodes, quad_net_at, NetParams, NetReport, NetSolver, Node, QuadNet};
@@ -111,6 +112,8 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
     out.write("nodes.csv", nodes_csv(&nodes))?;
     out.write("unrolled.svg", cut_sheet_svg(&cut_pieces(&runs, &nodes)))?;
     out.write("preview.svg", preview_svg(&mesh, &merged(&runs)))?;
+    let families: Vec<(&str, &[_], &[_])> = labels.iter().zip(&runs).map(|(label, run)| (label.as_str(), run.curves.as_slice(), run.pattern.strips.as_slice())).collect();
+    write_view(&out, &name, &mesh, &families, None)?;
     let report = report_json(&name, &labels, &solver, &runs, &net, &nodes, [field_seconds, strips_seconds, started.elapsed().as_secs_f64()]);
     out.write("report.json", serde_json::to_string_pretty(&report).map_err(|e| CliError::internal(format!("report.json: {e}")))?)?;
     let target = out.target().display().to_string();
@@ -124,7 +127,7 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
     summary(
         verbosity,
         &format!(
-            "{} iterations{}; intersection angle min {:.1}°, mean {:.1}°\n{}\nnet: {} vertices, {} quads; {} nodes\ndone in {:.1} s; wrote {target}/ (curves_<k>.obj, strips_<k>.obj, net.obj, nodes.csv, unrolled.svg, preview.svg, report.json)",
+            "{} iterations{}; intersection angle min {:.1}°, mean {:.1}°\n{}\nnet: {} vertices, {} quads; {} nodes\ndone in {:.1} s; wrote {target}/ (curves_<k>.obj, strips_<k>.obj, net.obj, nodes.csv, unrolled.svg, preview.svg, view.html, report.json)",
             r.iterations,
             if r.converged { ", converged" } else { "" },
             r.intersection.min_degrees,

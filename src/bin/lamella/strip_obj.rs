@@ -1,6 +1,6 @@
 //! OBJ files of a design: curves.obj (level polylines as `l` elements), strips.obj (quad strips,
 //! one named group per strip) and rulings.obj (one segment per ruling); and reading strips.obj
-//! back for `unroll` and `metrics`.
+//! back for `unroll`, `metrics` and `view`, and curves.obj for `view`.
 use crate::error::{CliError, CliResult};
 use crate::mesh_input::read_text;
 use lamella::curves::LevelCurve;
@@ -140,4 +140,36 @@ pub fn read_strips_obj(path: &Path) -> CliResult<Vec<StripShape>> {
         return Err(CliError::bad_input(format!("{}: strip `{}` has fewer than 2 rulings", path.display(), lamella::input::clip(&short.name))));
     }
     Ok(shapes)
+}
+
+/// Reads the polylines of a curves.obj written by [`curves_obj`]: one per `l` element, its
+/// vertices by their 1-based indices (a closed curve repeats its first vertex).
+pub fn read_curves_obj(path: &Path) -> CliResult<Vec<Vec<Vec3>>> {
+    let text = read_text(path)?;
+    let bad = |line: usize, what: &str| CliError::bad_input(format!("{}: line {line}: {what}", path.display()));
+    let mut vertices: Vec<Vec3> = Vec::new();
+    let mut polylines = Vec::new();
+    for (i, raw) in text.lines().enumerate() {
+        let line = i + 1;
+        let mut tokens = raw.split('#').next().unwrap_or("").split_whitespace();
+        match tokens.next() {
+            Some("v") => {
+                let coordinates: Vec<f64> = tokens.take(3).map(|t| t.parse::<f64>()).collect::<Result<_, _>>().map_err(|_| bad(line, "malformed vertex"))?;
+                let [x, y, z] = coordinates[..] else { return Err(bad(line, "a vertex needs 3 coordinates")) };
+                if ![x, y, z].iter().all(|c| c.is_finite()) {
+                    return Err(bad(line, "non-finite coordinate"));
+                }
+                vertices.push(Vec3::new(x, y, z));
+            }
+            Some("l") => {
+                let polyline = tokens
+                    .map(|t| t.parse::<usize>().ok().and_then(|k| k.checked_sub(1)).and_then(|k| vertices.get(k).copied()))
+                    .collect::<Option<Vec<Vec3>>>()
+                    .ok_or_else(|| bad(line, "a polyline index is not a vertex defined above"))?;
+                polylines.push(polyline);
+            }
+            _ => {}
+        }
+    }
+    Ok(polylines)
 }
