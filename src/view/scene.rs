@@ -97,14 +97,15 @@ pub struct ViewScene {
 }
 
 impl ViewScene {
-    /// The scene of the strip families `families` (name, level curves, strips) on `mesh`. The
+    /// The scene of the strip families `families` (name, level curves, strips) on `mesh` (none:
+    /// the strips and curves alone). The
     /// strips are named as in the CLI's files: `strip_<id>` for one family, `f<k>_strip_<id>`
     /// for family `k` of several.
-    pub fn of_families(title: &str, mesh: &TriMesh, families: &[(&str, &[LevelCurve], &[RectifyingStrip])]) -> ViewScene {
+    pub fn of_families(title: &str, mesh: Option<&TriMesh>, families: &[(&str, &[LevelCurve], &[RectifyingStrip])]) -> ViewScene {
         let name = |k: usize, id: usize| if families.len() == 1 { format!("strip_{id}") } else { format!("f{k}_strip_{id}") };
         ViewScene {
             title: title.to_string(),
-            surface: Some(ViewSurface::from_mesh(mesh)),
+            surface: mesh.map(ViewSurface::from_mesh),
             curves: families.iter().flat_map(|f| f.1.iter().map(polyline)).collect(),
             families: families.iter().map(|f| f.0.to_string()).collect(),
             strips: families

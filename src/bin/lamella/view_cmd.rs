@@ -22,7 +22,7 @@ pub const VIEW_FILE: &str = "view.html";
 /// into `out`, with the bending utilisation of each strip when `plan` checked them (one check
 /// per strip, in order).
 pub fn write_view(out: &OutputDir, title: &str, mesh: &TriMesh, families: &[(&str, &[LevelCurve], &[RectifyingStrip])], plan: Option<&FabricationPlan>) -> CliResult<()> {
-    let mut scene = ViewScene::of_families(title, mesh, families);
+    let mut scene = ViewScene::of_families(title, Some(mesh), families);
     if let Some(plan) = plan {
         scene.strips.iter_mut().zip(&plan.checks).for_each(|(s, c)| s.utilisation = Some(c.max_utilisation));
     }
