@@ -3,7 +3,8 @@
 # material, so that the bending utilisation is in the page), renders its view.html in headless
 # Chromium with networking disabled, and checks
 #   - the page's own self-check (read back from the DOM): a WebGL context, every strip of
-#     report.json drawn, strips found by the picking pass, no script or console errors;
+#     report.json drawn, strips found by the picking pass, no script or console errors; opened
+#     as view.html#colour=utilisation&strip=2, the utilisation legend and strip 2's figures;
 #   - a screenshot: not blank, and every strip's colour present in it;
 #   - `lamella view DIR` writes view.html again from the directory's files, and that page passes
 #     its self-check too.
@@ -33,11 +34,14 @@ browser=(chromium --headless --no-sandbox --user-data-dir="$scratch/profile" --u
     --enable-unsafe-swiftshader --host-resolver-rules="MAP * ~NOTFOUND" --proxy-server=127.0.0.1:9
     --proxy-bypass-list='<-loopback>' --window-size=1280,800 --virtual-time-budget=10000 --hide-scrollbars)
 
-# Reads the page's self-check from the DOM and compares it with report.json.
+# Reads the page's self-check from the DOM and compares it with report.json. With a third
+# argument, the page is opened as view.html#colour=utilisation&strip=K and the legend and the
+# strip panel are checked against strip K of report.json.
 self_check() {
-    local page="$1" report="$2"
-    "${browser[@]}" --dump-dom "file://$page" 2>"$scratch/chromium.log" >"$scratch/dom.html"
-    python3 - "$scratch/dom.html" "$report" <<'PY'
+    local page="$1" report="$2" strip="${3:-}" address="file://$1"
+    [ -z "$strip" ] || address="$address#colour=utilisation&strip=$strip"
+    "${browser[@]}" --dump-dom "$address" 2>"$scratch/chromium.log" >"$scratch/dom.html"
+    python3 - "$scratch/dom.html" "$report" "$strip" <<'PY'
 import html, json, re, sys
 dom = open(sys.argv[1], encoding="utf-8").read()
 match = re.search(r'<pre id="lamella-self-check"[^>]*>(.*?)</pre>', dom, re.S)
@@ -45,7 +49,7 @@ if not match:
     sys.exit("no self-check in the page")
 check = json.loads(html.unescape(match.group(1)))
 expected = json.load(open(sys.argv[2]))["strips"]["overall"]["strip_count"]
-print("self-check:", {k: v for k, v in check.items() if k != "colours"})
+print("self-check:", {k: v for k, v in check.items() if k not in ("colours", "legend", "info")})
 problems = []
 if not check["webgl"]:
     problems.append("no WebGL context")
@@ -55,6 +59,12 @@ if not (check["strips_expected"] == check["strips_drawn"] == expected):
     problems.append("%d strips in report.json, %d in the page, %d drawn" % (expected, check["strips_expected"], check["strips_drawn"]))
 if check["strips_seen"] < 1:
     problems.append("no strip visible in the 3D view")
+if sys.argv[3]:
+    strip = json.load(open(sys.argv[2]))["strips"]["strips"][int(sys.argv[3])]
+    figures = "%s (id %s" % (strip["name"], strip["id"]), "%.3f m" % strip["length_m"], "%.3f °" % strip["max_diff_theta_degrees"]
+    if check["colouring"] != "utilisation" or "utilisation" not in check["legend"] or " %" not in check["legend"]:
+        problems.append("colouring %s with the legend '%s'" % (check["colouring"], check["legend"]))
+    problems += ["the strip panel '%s' lacks '%s'" % (check["info"], f) for f in figures if f not in check["info"]]
 if problems:
     sys.exit("self-check failed: " + "; ".join(problems))
 json.dump(check["colours"], open(sys.argv[1] + ".colours.json", "w"))
@@ -64,6 +74,9 @@ PY
 echo "== viewer: self-check of design's view.html"
 self_check "$scratch/design/view.html" "$scratch/design/report.json"
 cp "$scratch/dom.html.colours.json" "$scratch/colours.json"
+
+echo "== viewer: colour by utilisation, strip 2 selected"
+self_check "$scratch/design/view.html" "$scratch/design/report.json" 2
 
 echo "== viewer: screenshot"
 "${browser[@]}" --screenshot="$scratch/view.png" "file://$scratch/design/view.html" 2>"$scratch/chromium.log" >/dev/null

@@ -14,8 +14,11 @@ const SCRIPT: &str = include_str!("viewer.js");
 /// The id of the element into which the page writes its self-check once drawn: JSON with
 /// `webgl` (whether a WebGL context was created), `strips_expected` (strips in the data),
 /// `strips_drawn` (strips put into the 3D and flat views), `strips_seen` (strips whose ids the
-/// picking pass found in the 3D view), `colours` (the first strips' colours, `#rrggbb`) and
-/// `errors` (script errors and `console.error` messages, empty when all went well).
+/// picking pass found in the 3D view), `colours` (the first strips' colours, `#rrggbb`),
+/// `colouring`, `legend` and `info` (the colouring shown, the legend's and the strip panel's
+/// text) and `errors` (script errors and `console.error` messages, empty when all went well).
+/// The page's address may choose the colouring and select a strip: `view.html#colour=angle&strip=3`
+/// (colourings `strip`, `family`, `angle`, `utilisation`).
 pub const SELF_CHECK_ID: &str = "lamella-self-check";
 
 /// Gap between the rows of flat strips, in strip heights.

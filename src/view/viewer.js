@@ -5,7 +5,7 @@
 (function () {
   var selfCheck = document.querySelector("pre[data-self-check]");
   var errors = [];
-  var check = { webgl: false, context: null, strips_expected: 0, strips_drawn: 0, strips_seen: 0, colours: [], errors: errors };
+  var check = { webgl: false, context: null, strips_expected: 0, strips_drawn: 0, strips_seen: 0, colours: [], colouring: null, legend: "", info: "", errors: errors };
   function writeCheck() {
     selfCheck.textContent = JSON.stringify(check);
     selfCheck.setAttribute("data-status", errors.length === 0 && check.webgl ? "ok" : "failed");
@@ -228,6 +228,13 @@
     option.textContent = c.label;
     select.appendChild(option);
   });
+  // The page's address may choose the colouring and a selected strip: view.html#colour=angle&strip=3.
+  location.hash.replace(/^#/, "").split("&").forEach(function (pair) {
+    var parts = pair.split("=");
+    if (parts[0] === "colour" && colourings.some(function (c) { return c.key === parts[1]; })) state.colouring = parts[1];
+    if (parts[0] === "strip" && /^[0-9]+$/.test(parts[1]) && Number(parts[1]) < strips.length) state.selected = Number(parts[1]);
+  });
+  select.value = state.colouring;
   select.addEventListener("change", function () { state.colouring = select.value; recolour(); });
   ["surface", "curves", "rulings", "flat"].forEach(function (key) {
     var box = document.getElementById("show-" + key);
@@ -524,5 +531,9 @@
   for (var k = 0; k < pixels.length; k += 4) { var id = idAt(pixels, k); if (id >= 0 && id < strips.length) seen[id] = true; }
   check.strips_seen = Object.keys(seen).length;
   draw(false);
+  showInfo();
+  check.colouring = state.colouring;
+  check.legend = document.getElementById("legend").textContent;
+  check.info = document.getElementById("info").textContent;
   writeCheck();
 })();

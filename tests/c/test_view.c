@@ -6,17 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static size_t occurrences(const char *text, const char *part)
-{
-    size_t n = 0;
-    const char *at = text;
-    while ((at = strstr(at, part)) != NULL) {
-        n++;
-        at += strlen(part);
-    }
-    return n;
-}
-
 /* The page with the two-call pattern (checking the too-small calls), or NULL. */
 static char *page(const LmlStrips *strips, const LmlCurves *curves, const double *utilisation, size_t count, const char *title)
 {

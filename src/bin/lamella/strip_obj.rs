@@ -93,6 +93,16 @@ pub fn rulings_obj(pattern: &StripPattern) -> String {
     text
 }
 
+/// The point of an OBJ `v` line from the tokens after `v`: 3 finite coordinates, or what is wrong.
+fn obj_point<'a>(tokens: impl Iterator<Item = &'a str>) -> Result<Vec3, &'static str> {
+    let coordinates: Vec<f64> = tokens.take(3).map(|t| t.parse::<f64>()).collect::<Result<_, _>>().map_err(|_| "malformed vertex")?;
+    let [x, y, z] = coordinates[..] else { return Err("a vertex needs 3 coordinates") };
+    if ![x, y, z].iter().all(|c| c.is_finite()) {
+        return Err("non-finite coordinate");
+    }
+    Ok(Vec3::new(x, y, z))
+}
+
 /// Reads the strips of a strips.obj written by [`strips_obj`]: the `v` lines of each `g` group,
 /// alternately left and right, at least 2 pairs per strip. Faces and comments are not needed.
 pub fn read_strips_obj(path: &Path) -> CliResult<Vec<StripShape>> {
@@ -112,13 +122,8 @@ pub fn read_strips_obj(path: &Path) -> CliResult<Vec<StripShape>> {
                 shapes.push(StripShape { name, left: Vec::new(), right: Vec::new() });
             }
             Some("v") => {
-                let coordinates: Vec<f64> = tokens.take(3).map(|t| t.parse::<f64>()).collect::<Result<_, _>>().map_err(|_| bad(line, "malformed vertex"))?;
-                let [x, y, z] = coordinates[..] else { return Err(bad(line, "a vertex needs 3 coordinates")) };
-                if ![x, y, z].iter().all(|c| c.is_finite()) {
-                    return Err(bad(line, "non-finite coordinate"));
-                }
+                let p = obj_point(tokens).map_err(|what| bad(line, what))?;
                 let shape = shapes.last_mut().ok_or_else(|| bad(line, "vertex before the first `g strip_<id>` group"))?;
-                let p = Vec3::new(x, y, z);
                 match pending_left.take() {
                     None => pending_left = Some(p),
                     Some(left) => {
@@ -154,12 +159,7 @@ pub fn read_curves_obj(path: &Path) -> CliResult<Vec<Vec<Vec3>>> {
         let mut tokens = raw.split('#').next().unwrap_or("").split_whitespace();
         match tokens.next() {
             Some("v") => {
-                let coordinates: Vec<f64> = tokens.take(3).map(|t| t.parse::<f64>()).collect::<Result<_, _>>().map_err(|_| bad(line, "malformed vertex"))?;
-                let [x, y, z] = coordinates[..] else { return Err(bad(line, "a vertex needs 3 coordinates")) };
-                if ![x, y, z].iter().all(|c| c.is_finite()) {
-                    return Err(bad(line, "non-finite coordinate"));
-                }
-                vertices.push(Vec3::new(x, y, z));
+                vertices.push(obj_point(tokens).map_err(|what| bad(line, what))?);
             }
             Some("l") => {
                 let polyline = tokens
