@@ -1597,6 +1597,37 @@ LmlStatus lml_net_field(const struct LmlNet *net,
                         size_t capacity,
                         size_t *needed);
 
+// Writes the interactive 3D viewer page of `strips` (a view.html as `lamella design` writes):
+// one self-contained HTML file (no network access, no other files) showing the surface, the
+// level curves, the strips (coloured per strip, by the angle error of their rectifying planes,
+// by bending utilisation when given), their rulings and their flat unrollings, with each
+// strip's length and Table 4 measures on hover or click. UTF-8 with a terminating NUL,
+// two-call pattern: `*needed` receives the byte count including the NUL; if `text` is NULL or
+// `capacity` smaller, nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned. The
+// same inputs give the same bytes.
+//
+// - `strips`: from `lml_strips_new`; its strips are named `strip_<i>`, their family by the θ
+//   they were built for ("θ = 60°").
+// - `curves`: the curves the strips were built on: their surface and polylines are shown; NULL
+//   shows the strips alone.
+// - `utilisation`: NULL, or `utilisation_count` finite values, one per strip in order: the
+//   largest bending utilisation of each (`max_utilisation` of `lml_fabrication_strip_checks`,
+//   1 = the allowable stress). Copied.
+// - `title`: NUL-terminated UTF-8 shown as the page title (the design's name); NULL for
+//   "Lamella strips".
+//
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT` (NULL
+// `strips` or `needed`, `utilisation_count` not the strip count, a non-finite utilisation
+// (the strip is named), `title` not UTF-8).
+LmlStatus lml_strips_view_html(const struct LmlStrips *strips,
+                               const struct LmlCurves *curves,
+                               const double *utilisation,
+                               size_t utilisation_count,
+                               const char *title,
+                               uint8_t *text,
+                               size_t capacity,
+                               size_t *needed);
+
 #ifdef __cplusplus
 }  // extern "C"
 #endif  // __cplusplus

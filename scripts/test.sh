@@ -4,8 +4,10 @@
 #      include/lamella.h matches what cbindgen generates from the source;
 #   2. the C ABI from the outside (scripts/test-c-abi.sh): strict C99 harness under valgrind,
 #      the header as C++17, the C and C++ examples;
-#   3. the C# binding and Grasshopper plugin under Mono (scripts/test-csharp.sh).
-# Needs the Rust toolchain, cc/c++, valgrind and Mono (the last two installed by their scripts if missing).
+#   3. view.html, the 3D viewer, rendered in headless Chromium (scripts/test-viewer.sh);
+#   4. the C# binding and Grasshopper plugin under Mono (scripts/test-csharp.sh).
+# Needs the Rust toolchain, cc/c++, valgrind, Chromium and Mono (the last three installed by their
+# scripts if missing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -13,4 +15,5 @@ echo "== Rust tests"
 cargo test --locked
 
 scripts/test-c-abi.sh
+scripts/test-viewer.sh
 scripts/test-csharp.sh

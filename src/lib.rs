@@ -7,7 +7,7 @@
 //! its level [`curves`]; the rectifying developable [`strips`] along them with their flat
 //! unrollings; gridshells from [`net`]s of two families (Sec. 4.1); what a workshop needs to
 //! make them in [`fabrication`]; the outside reviewer's measures of the results in [`quality`];
-//! the C ABI in
+//! a self-contained interactive 3D [`view`] of a design (one HTML file); the C ABI in
 //! [`ffi`]; procedural [`surfaces`] for tests and the demo; [`input`]: the size limit of input
 //! files and the bounds on text quoted in error messages.
 pub mod curves;
@@ -23,3 +23,4 @@ pub mod solver;
 pub mod strips;
 pub mod surfaces;
 pub mod tracing;
+pub mod view;

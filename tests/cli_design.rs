@@ -52,7 +52,7 @@ fn default_run_meets_the_quality_bounds_and_writes_well_formed_files() {
     let output = lamella(&dir.0, &[]);
     assert_ok(&output);
     let out = dir.path("lamella-out");
-    for name in ["field.csv", "curves.obj", "strips.obj", "rulings.obj", "report.json", "unrolled.svg", "convergence.svg", "preview.svg", "session.bin"] {
+    for name in ["field.csv", "curves.obj", "strips.obj", "rulings.obj", "report.json", "unrolled.svg", "convergence.svg", "preview.svg", "session.bin", "view.html"] {
         assert!(out.join(name).is_file(), "missing {name}");
     }
     let report = read_json(&out.join("report.json"));

@@ -45,7 +45,7 @@ fn the_asymptotic_net_of_a_hyperbolic_paraboloid_is_written_with_its_nodes() {
     let code = output.status.code();
     assert!(code == Some(0) || code == Some(3), "exit {code:?}: {}", stderr(&output));
     let out = dir.path("out");
-    for name in ["curves_0.obj", "curves_1.obj", "strips_0.obj", "strips_1.obj", "net.obj", "nodes.csv", "unrolled.svg", "preview.svg", "report.json"] {
+    for name in ["curves_0.obj", "curves_1.obj", "strips_0.obj", "strips_1.obj", "net.obj", "nodes.csv", "unrolled.svg", "preview.svg", "view.html", "report.json"] {
         assert!(out.join(name).is_file(), "{name} missing");
     }
     // The net's vertices lie on z = xy/5 and its quads are flat parallelograms of the rulings:

@@ -15,7 +15,7 @@ namespace Lamella.Tests
     {
         private const double Thickness = 0.02;
 
-        private static Strips CylinderStrips(out LamellaMesh mesh, out FieldSolver field, out LevelCurves curves)
+        internal static Strips CylinderStrips(out LamellaMesh mesh, out FieldSolver field, out LevelCurves curves)
         {
             var c = new Cylinder(24, 14, 3);
             mesh = LamellaMesh.FromArrays(c.Xyz, c.Triangles);

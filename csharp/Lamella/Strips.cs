@@ -119,6 +119,24 @@ namespace Lamella
         public SkippedCurve[] Skipped() =>
             Native.Read((SkippedCurve[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_skipped(Handle, b, c, out n));
 
+        /// <summary>
+        /// The interactive 3D viewer page of the strips (what <c>lamella design</c> writes as view.html): one
+        /// self-contained HTML file, no network needed, showing the surface and level curves of
+        /// <paramref name="curves"/> (the curves the strips were built on), the strips coloured per strip, by the angle
+        /// error of their rectifying planes or by <paramref name="utilisation"/> (one value per strip, e.g.
+        /// <see cref="StripCheck.MaxUtilisation"/>; null for none), their rulings and flat unrollings, and each strip's
+        /// length and Table 4 figures on hover or click. <paramref name="title"/> names the design (null: "Lamella strips").
+        /// </summary>
+        public string ViewHtml(LevelCurves curves, double[] utilisation = null, string title = null)
+        {
+            if (curves == null) throw new ArgumentNullException(nameof(curves));
+            byte[] name = title == null ? null : Utf8.ToNative(title);
+            UIntPtr count = Native.Size(utilisation == null ? 0 : utilisation.Length);
+            byte[] bytes = Native.Read((byte[] b, UIntPtr c, out UIntPtr n) =>
+                NativeMethods.lml_strips_view_html(Handle, curves.Handle, utilisation, count, name, b, c, out n));
+            return Utf8.FromTerminated(bytes);
+        }
+
         /// <summary>Releases the native strips (harmless to call twice).</summary>
         public void Dispose() => Handle.Dispose();
     }

@@ -12,7 +12,8 @@
 //! metrics ([`LmlStrips`]), each a handle module with `lml_<handle>_new` / `_free` and two-call
 //! array outputs, and the initialisation of Sec. 3.2.2: boundary start points, traced guide
 //! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes; and nets of two
-//! families ([`LmlNet`], paper Sec. 4.1).
+//! families ([`LmlNet`], paper Sec. 4.1); and the interactive 3D viewer page of strips
+//! (`lml_strips_view_html`).
 //!
 //! The header is generated from this module by cbindgen (configuration in `cbindgen.toml`);
 //! `tests/ffi_header.rs` fails when the committed header is stale and rewrites it when
@@ -49,6 +50,7 @@ mod guides;
 mod initial_fields;
 mod fabrication;
 mod net;
+mod view;
 
 pub use boundary_starts::*;
 pub use curves::*;
@@ -72,6 +74,7 @@ pub use strip_params::*;
 pub use strips::*;
 pub use trace_options::*;
 pub use version::*;
+pub use view::*;
 
 #[cfg(test)]
 mod tests {

@@ -60,6 +60,17 @@ int every_status_seen(void)
     return all;
 }
 
+size_t occurrences(const char *text, const char *needle)
+{
+    size_t count = 0;
+    const char *at = text;
+    while ((at = strstr(at, needle)) != NULL) {
+        count++;
+        at += strlen(needle);
+    }
+    return count;
+}
+
 int check_summary(void)
 {
     printf("%d passed, %d failed\n", passed, failed);

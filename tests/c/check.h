@@ -5,6 +5,8 @@
 
 #include "lamella.h"
 
+#include <stddef.h>
+
 /* Records one check; prints `what` (and the library's last error message) when it fails. */
 void check(int ok, const char *file, int line, const char *what);
 
@@ -16,6 +18,9 @@ void check_message(const char *part, const char *file, int line);
 
 /* Whether every LmlStatus value was produced by some checked call; prints the missing ones. */
 int every_status_seen(void);
+
+/* Counts the occurrences of `needle` in `text`. */
+size_t occurrences(const char *text, const char *needle);
 
 /* Prints "N passed, M failed" and returns the process exit code. */
 int check_summary(void);

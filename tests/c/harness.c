@@ -33,6 +33,7 @@ int main(int argc, char **argv)
         /* The rest of the pipeline: field -> curves -> strips -> unrolled strips. */
         curves = test_curves(field, &cylinder);
         test_fabrication(curves);
+        test_view(curves);
         test_strips(field, curves);
     }
     lml_field_free(field);

@@ -41,6 +41,10 @@ void test_guides(const Cylinder *cylinder);
  * invalid input, the strain of each strip against an independent curvature computation, pieces
  * covering their strips with the overlaps, the DXF's layers, piece ids and the bill of materials. */
 void test_fabrication(const LmlCurves *curves);
+/* The viewer page of strips on `curves` (not taken over): the two-call pattern, a
+ * self-contained page with every strip and its figures, the title escaped, the same bytes twice,
+ * the bounding box around every strip vertex, the utilisation, every invalid input. */
+void test_view(const LmlCurves *curves);
 
 /* A net of two families (geodesic circles and rulings on the cylinder): every invalid input,
  * stepping to convergence, both fields with the two-call pattern against the cylinder's axis. */

@@ -101,18 +101,6 @@ static void bad_inputs(const LmlStrips *strips, const LmlMaterial *timber, const
     lml_fabrication_free(NULL);
 }
 
-/* Counts the occurrences of `needle` in `text`. */
-static size_t occurrences(const char *text, const char *needle)
-{
-    size_t count = 0;
-    const char *at = text;
-    while ((at = strstr(at, needle)) != NULL) {
-        count++;
-        at += strlen(needle);
-    }
-    return count;
-}
-
 /* Two-call pattern on a text output; returns the malloc'd text or NULL. */
 static char *text_of(const LmlFabrication *fabrication, uint32_t kind, size_t index)
 {

@@ -196,6 +196,9 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_fabrication_pieces(FabricationHandle fabrication, [Out] Piece[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_view_html(StripsHandle strips, CurvesHandle curves, double[] utilisation, UIntPtr utilisationCount,
+            byte[] utf8Title, [Out] byte[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_fabrication_text(FabricationHandle fabrication, uint kind, UIntPtr index, [Out] byte[] buffer, UIntPtr capacity,
             out UIntPtr needed);
     }

@@ -18,7 +18,8 @@ pub struct Cli {
 
 #[derive(Subcommand, Debug)]
 pub enum Command {
-    /// The whole pipeline: field → level curves → rectifying strips → cut sheet, plots, report.
+    /// The whole pipeline: field → level curves → rectifying strips → cut sheet, plots, report,
+    /// 3D viewer (view.html).
     Design(DesignArgs),
     /// Mesh validation report: counts, boundary loops, disk or not, bounding box, mean edge
     /// length and the problems found (the first 100 one per line, the rest counted).
@@ -44,8 +45,13 @@ pub enum Command {
     Fabricate(FabricateArgs),
     /// A gridshell net of two curve families (paper Sec. 4.1): both fields optimised together,
     /// strips per family, the quad net of their crossings and the nodes. Writes curves_<k>.obj,
-    /// strips_<k>.obj, net.obj, nodes.csv, unrolled.svg (with node marks), preview.svg, report.json.
+    /// strips_<k>.obj, net.obj, nodes.csv, unrolled.svg (with node marks), preview.svg, view.html, report.json.
     Net(NetArgs),
+    /// The interactive 3D viewer of an output directory: prints the path of DIR/view.html, which
+    /// `design` and `net` write, first writing it from the directory's files (strips.obj,
+    /// report.json, surface.obj, curves.obj) when it is missing. Open it in any browser: one
+    /// self-contained file, no network needed.
+    View(ViewArgs),
 }
 
 /// Progress and summary output.
@@ -379,4 +385,11 @@ pub struct NetArgs {
     pub out: OutArgs,
     #[command(flatten)]
     pub verbosity: VerbosityArgs,
+}
+
+#[derive(Args, Debug, Clone)]
+pub struct ViewArgs {
+    /// An output directory of `lamella design` (or `strips`, `net`).
+    #[arg(value_name = "DIR")]
+    pub dir: PathBuf,
 }

@@ -1,6 +1,6 @@
 //! `lamella design` (and `lamella` without arguments): the whole pipeline of the paper on one
 //! surface: field (Sec. 3.2) → level curves → rectifying strips (Sec. 3.4) → cut sheet, plots and
-//! report, into one output directory.
+//! report and the 3D viewer (view.html), into one output directory.
 use crate::args::DesignArgs;
 use crate::config::{Flags, Settings};
 use crate::console::err_line;
@@ -16,6 +16,8 @@ use crate::start_field::start_solver;
 use crate::strip_obj::strip_name;
 use crate::strips_cmd::{build_strips, strips_summary, warning_lines, write_strip_files, StripRun};
 use crate::svg::cut_sheet::{cut_sheet_svg, CutPiece};
+use crate::view_cmd::write_view;
+use lamella::view::family_name;
 use lamella::fabrication::{plan_fabrication, FabricationStrip};
 use std::time::Instant;
 
@@ -74,6 +76,7 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
         }
         None => None,
     };
+    write_view(&out, &name, &mesh, &[(&family_name(theta), &run.curves, &run.pattern.strips)], plan.as_ref())?;
     let timings = Timings { field: field_seconds, strips: strips_seconds, total: started.elapsed().as_secs_f64() };
     let parameters = report_json::parameters(&settings, theta, &name, Some(&start.description));
     let mut report = report_json::document_value(&parameters, Some((&solver, &history, &measure)), Some(&run), &timings);
@@ -93,7 +96,7 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     summary(
         verbosity,
         &format!(
-            "{}\n{}\n{workshop}done in {:.1} s (field {field_seconds:.1} s, strips {strips_seconds:.1} s); wrote {target}/ (surface.obj, field.csv, session.bin, energies.csv, curves.obj, strips.obj, rulings.obj, report.json, unrolled.svg, convergence.svg, preview.svg{workshop_files})",
+            "{}\n{}\n{workshop}done in {:.1} s (field {field_seconds:.1} s, strips {strips_seconds:.1} s); wrote {target}/ (surface.obj, field.csv, session.bin, energies.csv, curves.obj, strips.obj, rulings.obj, report.json, unrolled.svg, convergence.svg, preview.svg, view.html{workshop_files})",
             field_summary(&solver, &measure),
             strips_summary(&run),
             started.elapsed().as_secs_f64()

@@ -29,6 +29,7 @@ mod svg;
 mod trace_cmd;
 mod units;
 mod unroll;
+mod view_cmd;
 
 use args::{Cli, Command};
 use clap::Parser;
@@ -65,5 +66,6 @@ fn run(cli: &Cli) -> CliResult<()> {
         Some(Command::Metrics(args)) => metrics::run(args),
         Some(Command::Fabricate(args)) => fabricate::run(args),
         Some(Command::Net(args)) => net_cmd::run(args),
+        Some(Command::View(args)) => view_cmd::run(args),
     }
 }

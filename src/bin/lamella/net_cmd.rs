@@ -15,6 +15,7 @@ use crate::strip_obj::{curves_obj, strips_obj};
 use crate::strips_cmd::{build_strips, StripRun};
 use crate::svg::cut_sheet::{cut_sheet_svg, CutMark, CutPiece};
 use crate::svg::preview::preview_svg;
+use crate::view_cmd::write_view;
 use lamella::fabrication::{plan_fabrication, FabricationStrip};
 use lamella::field::Family;
 use lamella::initialisation::SearchOptions;
@@ -125,6 +126,8 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
         }
         None => None,
     };
+    let view_families: Vec<(&str, &[_], &[_])> = labels.iter().zip(&runs).map(|(label, run)| (label.as_str(), run.curves.as_slice(), run.pattern.strips.as_slice())).collect();
+    write_view(&out, &name, &mesh, &view_families, plan.as_ref())?;
     let mut report = report_json(&name, &labels, &solver, &runs, &net, &nodes, [field_seconds, strips_seconds, started.elapsed().as_secs_f64()]);
     if let (Some(plan), Some(root)) = (&plan, report.as_object_mut()) {
         root.insert("fabrication".into(), report_section(plan));
@@ -146,7 +149,7 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
     summary(
         verbosity,
         &format!(
-            "{} iterations{}; intersection angle min {:.1}°, mean {:.1}°\n{}\nnet: {} vertices, {} quads; {} nodes\n{}done in {:.1} s; wrote {target}/ (curves_<k>.obj, strips_<k>.obj, net.obj, nodes.csv, unrolled.svg, preview.svg, report.json{})",
+            "{} iterations{}; intersection angle min {:.1}°, mean {:.1}°\n{}\nnet: {} vertices, {} quads; {} nodes\n{}done in {:.1} s; wrote {target}/ (curves_<k>.obj, strips_<k>.obj, net.obj, nodes.csv, unrolled.svg, preview.svg, view.html, report.json{})",
             r.iterations,
             if r.converged { ", converged" } else { "" },
             r.intersection.min_degrees,

@@ -110,6 +110,22 @@ impl OutputDir {
     }
 }
 
+/// Adds `name` to the [`MARKER`] of the previous Lamella output `dir` (after a command wrote
+/// that file into it), so that `--force` may still replace the directory; a directory without
+/// the marker is left alone.
+pub fn record_in_marker(dir: &Path, name: &str) -> CliResult<()> {
+    let marker = dir.join(MARKER);
+    if !marker.is_file() {
+        return Ok(());
+    }
+    let text = read_text(&marker)?;
+    if text.lines().next() != Some(MARKER_HEADER) || text.lines().any(|l| l == name) {
+        return Ok(());
+    }
+    let separator = if text.ends_with('\n') { "" } else { "\n" };
+    std::fs::write(&marker, format!("{text}{separator}{name}\n")).map_err(|e| unwritable(dir, &e))
+}
+
 /// Whether anything (a file, directory or symbolic link, even a dangling one) is at `path`.
 fn present(path: &Path) -> bool {
     path.symlink_metadata().is_ok()

@@ -1,6 +1,6 @@
 //! OBJ files of a design: curves.obj (level polylines as `l` elements), strips.obj (quad strips,
 //! one named group per strip) and rulings.obj (one segment per ruling); and reading strips.obj
-//! back for `unroll` and `metrics`.
+//! back for `unroll`, `metrics` and `view`, and curves.obj for `view`.
 use crate::error::{CliError, CliResult};
 use crate::mesh_input::read_text;
 use lamella::curves::LevelCurve;
@@ -93,6 +93,16 @@ pub fn rulings_obj(pattern: &StripPattern) -> String {
     text
 }
 
+/// The point of an OBJ `v` line from the tokens after `v`: 3 finite coordinates, or what is wrong.
+fn obj_point<'a>(tokens: impl Iterator<Item = &'a str>) -> Result<Vec3, &'static str> {
+    let coordinates: Vec<f64> = tokens.take(3).map(|t| t.parse::<f64>()).collect::<Result<_, _>>().map_err(|_| "malformed vertex")?;
+    let [x, y, z] = coordinates[..] else { return Err("a vertex needs 3 coordinates") };
+    if ![x, y, z].iter().all(|c| c.is_finite()) {
+        return Err("non-finite coordinate");
+    }
+    Ok(Vec3::new(x, y, z))
+}
+
 /// Reads the strips of a strips.obj written by [`strips_obj`]: the `v` lines of each `g` group,
 /// alternately left and right, at least 2 pairs per strip. Faces and comments are not needed.
 pub fn read_strips_obj(path: &Path) -> CliResult<Vec<StripShape>> {
@@ -112,13 +122,8 @@ pub fn read_strips_obj(path: &Path) -> CliResult<Vec<StripShape>> {
                 shapes.push(StripShape { name, left: Vec::new(), right: Vec::new() });
             }
             Some("v") => {
-                let coordinates: Vec<f64> = tokens.take(3).map(|t| t.parse::<f64>()).collect::<Result<_, _>>().map_err(|_| bad(line, "malformed vertex"))?;
-                let [x, y, z] = coordinates[..] else { return Err(bad(line, "a vertex needs 3 coordinates")) };
-                if ![x, y, z].iter().all(|c| c.is_finite()) {
-                    return Err(bad(line, "non-finite coordinate"));
-                }
+                let p = obj_point(tokens).map_err(|what| bad(line, what))?;
                 let shape = shapes.last_mut().ok_or_else(|| bad(line, "vertex before the first `g strip_<id>` group"))?;
-                let p = Vec3::new(x, y, z);
                 match pending_left.take() {
                     None => pending_left = Some(p),
                     Some(left) => {
@@ -140,4 +145,31 @@ pub fn read_strips_obj(path: &Path) -> CliResult<Vec<StripShape>> {
         return Err(CliError::bad_input(format!("{}: strip `{}` has fewer than 2 rulings", path.display(), lamella::input::clip(&short.name))));
     }
     Ok(shapes)
+}
+
+/// Reads the polylines of a curves.obj written by [`curves_obj`]: one per `l` element, its
+/// vertices by their 1-based indices (a closed curve repeats its first vertex).
+pub fn read_curves_obj(path: &Path) -> CliResult<Vec<Vec<Vec3>>> {
+    let text = read_text(path)?;
+    let bad = |line: usize, what: &str| CliError::bad_input(format!("{}: line {line}: {what}", path.display()));
+    let mut vertices: Vec<Vec3> = Vec::new();
+    let mut polylines = Vec::new();
+    for (i, raw) in text.lines().enumerate() {
+        let line = i + 1;
+        let mut tokens = raw.split('#').next().unwrap_or("").split_whitespace();
+        match tokens.next() {
+            Some("v") => {
+                vertices.push(obj_point(tokens).map_err(|what| bad(line, what))?);
+            }
+            Some("l") => {
+                let polyline = tokens
+                    .map(|t| t.parse::<usize>().ok().and_then(|k| k.checked_sub(1)).and_then(|k| vertices.get(k).copied()))
+                    .collect::<Option<Vec<Vec3>>>()
+                    .ok_or_else(|| bad(line, "a polyline index is not a vertex defined above"))?;
+                polylines.push(polyline);
+            }
+            _ => {}
+        }
+    }
+    Ok(polylines)
 }
