@@ -17,7 +17,7 @@ mod level_angles;
 mod level_jet;
 mod params;
 mod problem;
-mod pseudo_geodesic;
+pub(crate) mod pseudo_geodesic;
 mod report;
 mod session;
 mod varying_angle;
