@@ -27,7 +27,7 @@ pub use crossing::{find_level_crossing, EdgeCrossing, LevelCrossing};
 pub use darboux::{level_frame, LevelFrame};
 pub use error::FieldError;
 pub use field_solver::{FieldSolver, FIELD_VALUE_LIMIT, MAX_LM_TRIALS};
-pub(crate) use field_solver::{stage_weights, validate_field, validate_params};
+pub(crate) use field_solver::{stage_weights, validate_field, validate_lm, validate_params};
 pub(crate) use gradient_norm::mean_gradient_norm;
 pub(crate) use report::problem_frames;
 pub use level_angles::{level_angles, AngleRange, LevelAngles};
