@@ -64,12 +64,12 @@ fn brute_force_distances(points: &[Vec3], mesh: &TriMesh) -> Vec<f64> {
         .collect()
 }
 
-/// The settings of the cylinder runs: Table 3's λ_angle and λ_close, with λ_fair and λ_edge
-/// raised to 0.1 (with Table 3's 0.02 and 2e-3 the same run ends at 17° RMS from outside, its
-/// edges stretched by 44 %), and a tolerance of 5 % of the diagonal.
+/// The settings of the cylinder runs: Table 3's λ_angle and λ_close, with λ_fair 0.05 and λ_edge
+/// 0.05 (with Table 3's 0.02 and 2e-3 the same run ends at 4.5° RMS from outside, 23° at worst
+/// near the boundary, its edges stretched by 43 %), and a tolerance of 5 % of the diagonal.
 fn cylinder_params() -> ReshapeParams {
     let mut params = ReshapeParams::new(45.0);
-    params.weights = ReshapeWeights { fair: 0.1, edge: 0.1, ..ReshapeWeights::default() };
+    params.weights = ReshapeWeights { fair: 0.05, edge: 0.05, ..ReshapeWeights::default() };
     params.tolerance = Tolerance::DiagonalFraction(0.05);
     params
 }
@@ -97,15 +97,15 @@ fn sixty_degree_family_moves_towards_forty_five_degrees() {
         100.0 * report.max_deviation / report.tolerance * 0.05,
         100.0 * report.max_edge_change
     );
-    // Measured: 5.4° RMS from outside (the middle curves 3.0–3.7°), 20° at worst. The paper's
-    // target, 45° within 1°, is NOT reached: the star rows of Sec. 3.3 are met (3.8° RMS at the
-    // vertices) by curves that are not 45° P-curves at the scale of three edges.
-    assert!(after.rms_error_degrees < 7.0, "outside RMS {}°", after.rms_error_degrees);
+    // Measured: 2.3° RMS from outside (per curve 0.3–3.7°), 7.6° at worst. The paper's target,
+    // 45° within 1°, is NOT reached: the optimiser's own rows are met to 1.8° RMS at the
+    // vertices, and the curves at the scale of three edges stay further off.
+    assert!(after.rms_error_degrees < 3.0, "outside RMS {}°", after.rms_error_degrees);
     // The curves stay curves: a straight family would satisfy no P-curve angle (14 of the ~120
     // resampled points are straight at the model's scale).
     assert!(after.straight_fraction() < 0.15, "straight fraction {}", after.straight_fraction());
     assert!(report.max_deviation <= report.tolerance, "deviation {} over the tolerance {}", report.max_deviation, report.tolerance);
-    // Measured 18.5 %.
+    // Measured 19.3 %.
     assert!(report.max_edge_change <= 0.25, "edge lengths change by {} %", 100.0 * report.max_edge_change);
 }
 

@@ -1,6 +1,6 @@
 //! What the surface optimisation (Sec. 3.3) freezes for one iteration and recomputes on the
 //! moved mesh after every step: the mesh's normals, areas and fairness operator, the lengths of
-//! the chords `v0 − p`, `v0 − q`, `q − p` of each curve vertex's star (Fig. 7), and the closest
+//! the chords of each curve vertex ([`super::curve_star`]), and the closest
 //! point `v*` of every vertex on the original surface with its normal `n*` (Eq. 14).
 
 use super::curve_star::CurveStar;
@@ -54,9 +54,11 @@ impl Original {
 /// Lengths of the chords of one curve vertex, frozen for an iteration.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct ChordLengths {
-    /// `‖v0 − p‖`, `‖v0 − q‖`, `‖q − p‖`.
+    /// `‖v0 − p‖`, `‖v0 − q‖` (for `E^S_c`), `‖v0 − p⁺‖`, `‖v0 − q⁺‖`, `‖q⁺ − p⁺‖` (for `E_angle`).
     pub to_p: f64,
     pub to_q: f64,
+    pub to_far_p: f64,
+    pub to_far_q: f64,
     pub tangent: f64,
 }
 
@@ -81,8 +83,10 @@ impl Linearisation {
         let chords = curves
             .iter()
             .map(|c| {
-                let (v0, p, q) = (positions[c.vertex as usize], c.p.point(positions), c.q.point(positions));
-                ChordLengths { to_p: (v0 - p).norm().max(MIN_CHORD), to_q: (v0 - q).norm().max(MIN_CHORD), tangent: (q - p).norm().max(MIN_CHORD) }
+                let v0 = positions[c.vertex as usize];
+                let [p, q, far_p, far_q] = [c.p, c.q, c.far_p, c.far_q].map(|e| e.point(positions));
+                let length = |d: Vec3| d.norm().max(MIN_CHORD);
+                ChordLengths { to_p: length(v0 - p), to_q: length(v0 - q), to_far_p: length(v0 - far_p), to_far_q: length(v0 - far_q), tangent: length(far_q - far_p) }
             })
             .collect();
         let anchors = original.anchors(positions);

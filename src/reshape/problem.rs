@@ -11,7 +11,8 @@
 //!   top of λ_close, see [`super::ReshapeParams::tolerance`]) and `v − v_ori`;
 //! * one edge block per edge (Eq. 15): `l_e − l*_e`;
 //! * one curve block per curve vertex: the eight rows of `E_angle` (Eq. 8–10, as in the level-set
-//!   problem) on the chords `v0 − p`, `v0 − q`, `q − p` of the moving mesh, then the three rows of
+//!   problem) on the chords `v0 − p⁺`, `v0 − q⁺`, `q⁺ − p⁺` of the moving mesh (one face beyond the
+//!   star, see [`super::curve_star`]), then the three rows of
 //!   `E^S_c = ‖(p − v0)/‖p − v0‖ + (q − v0)/‖q − v0‖‖²` (weighted by λ_fair).
 //!
 //! As in the authors' implementation, the chord lengths, the vertex normals `n`, the fairness
@@ -212,9 +213,10 @@ impl SurfaceProblem {
         let columns = variables.len();
         let aux_column = columns - AUXILIARIES;
         let lengths = self.lin.chords[k];
-        let (to_p, to_q, tangent) = (curve.to_p(), curve.to_q(), curve.tangent());
-        let ep = combine(&to_p, x) / lengths.to_p;
-        let eq = combine(&to_q, x) / lengths.to_q;
+        let (to_p, to_q) = (curve.from(&curve.p), curve.from(&curve.q));
+        let (to_far_p, to_far_q, tangent) = (curve.from(&curve.far_p), curve.from(&curve.far_q), curve.tangent());
+        let ep = combine(&to_far_p, x) / lengths.to_far_p;
+        let eq = combine(&to_far_q, x) / lengths.to_far_q;
         let t = combine(&tangent, x) / lengths.tangent;
         let start = self.auxiliary_start(k);
         let aux = &x[start..start + AUXILIARIES];
@@ -222,7 +224,7 @@ impl SurfaceProblem {
         let angle_scale = (weights.angle * self.lin.mesh.normalized_vertex_areas()[v0]).sqrt();
         let smooth_scale = weights.fair.sqrt();
         let (angle, smooth) = residuals.split_at_mut(ANGLE_ROWS);
-        let curvature = -(ep + eq);
+        let curvature = -(combine(&to_p, x) / lengths.to_p + combine(&to_q, x) / lengths.to_q);
         for c in 0..3 {
             smooth[c] = smooth_scale * curvature[c];
         }
@@ -244,8 +246,8 @@ impl SurfaceProblem {
                 }
             }
         };
-        add_dot(2, &to_p, &b, angle_scale / lengths.to_p);
-        add_dot(3, &to_q, &b, angle_scale / lengths.to_q);
+        add_dot(2, &to_far_p, &b, angle_scale / lengths.to_far_p);
+        add_dot(3, &to_far_q, &b, angle_scale / lengths.to_far_q);
         add_dot(5, &tangent, &u, angle_scale / lengths.tangent);
         for (combination, length) in [(&to_p, lengths.to_p), (&to_q, lengths.to_q)] {
             for &(w, coefficient) in combination.iter() {

@@ -27,7 +27,7 @@ pub struct ReshapeReport {
     pub iterations_this_step: usize,
     pub energies: ReshapeEnergies,
     /// RMS and maximum of `|θ_measured − θ|` in degrees over the curve vertices whose level
-    /// polyline `p, v0, q` is not straight, measured against the mesh's smooth normals (the
+    /// polyline `p⁺, v0, q⁺` is not straight, measured against the mesh's smooth normals (the
     /// optimiser's own diagnostic; judge curves with [`crate::quality::family_angles`]).
     pub angle_error_rms_degrees: f64,
     pub angle_error_max_degrees: f64,
@@ -58,9 +58,7 @@ pub(crate) fn star_angle_errors(problem: &SurfaceProblem, x: &[f64], theta: f64,
     let position = |v: u32| Vec3::new(x[3 * v as usize], x[3 * v as usize + 1], x[3 * v as usize + 2]);
     let mut result = (0.0, 0.0f64, 0);
     for curve in problem.curves() {
-        let positions = [curve.p.a, curve.p.b, curve.q.a, curve.q.b].map(position);
-        let p = positions[0] + (positions[1] - positions[0]) * curve.p.t;
-        let q = positions[2] + (positions[3] - positions[2]) * curve.q.t;
+        let [p, q] = [curve.far_p, curve.far_q].map(|e| position(e.a) + (position(e.b) - position(e.a)) * e.t);
         let v0 = position(curve.vertex);
         let (incoming, outgoing, chord) = (v0 - p, q - v0, q - p);
         let cross = incoming.cross(&outgoing);

@@ -196,15 +196,15 @@ impl ReshapeSolver {
         self.field.len()
     }
 
-    /// The unit chord `q − p` and normal of the `k`-th curve vertex at the current positions.
+    /// The unit chord `q⁺ − p⁺` and normal of the `k`-th curve vertex at the current positions.
     fn tangent_and_normal(&self, k: usize) -> (Vec3, Vec3) {
         let curve = &self.problem.curves()[k];
         let positions = self.problem.lin.mesh.positions();
-        let chord = curve.q.point(positions) - curve.p.point(positions);
+        let chord = curve.far_q.point(positions) - curve.far_p.point(positions);
         (chord / self.problem.lin.chords[k].tangent, self.problem.lin.normals[curve.vertex as usize])
     }
 
-    /// Starts `u = n × (q − p)` normalised (it follows +∇F, see [`crate::field::LevelCrossing`])
+    /// Starts `u = n × (q⁺ − p⁺)` normalised (it follows +∇F, see [`crate::field::LevelCrossing`])
     /// and `b = cos θ n + sin θ u`, the binormal of the target angle.
     fn initialize_auxiliaries(&mut self) {
         let (sin, cos) = self.params.theta_degrees.to_radians().sin_cos();
@@ -219,7 +219,7 @@ impl ReshapeSolver {
     }
 
     /// The orientation test of Sec. 3.2.2 on the moving mesh: where `det(q − p, u, n) ≤ 0`,
-    /// re-initialise `u = n × (q − p)` normalised. Returns how many side vectors were flipped.
+    /// re-initialise `u = n × (q⁺ − p⁺)` normalised. Returns how many side vectors were flipped.
     fn reorient_side_vectors(&mut self) -> usize {
         let mut flips = 0;
         for k in 0..self.problem.curves().len() {
