@@ -45,21 +45,32 @@ impl ReshapeSolver {
     /// Prepares the optimisation of `mesh` for the level sets of `field` (one value per vertex,
     /// fixed). Errors name the offending parameter or vertex.
     pub fn new(mesh: &TriMesh, field: &[f64], params: ReshapeParams) -> Result<ReshapeSolver, ReshapeError> {
+        ReshapeSolver::resume(mesh, mesh, field, params)
+    }
+
+    /// [`Self::new`] starting from `moved`, an earlier result on `original` (same faces): the
+    /// deviation, `v_ori` of Eq. 14 and `l*` of Eq. 15 still refer to `original`. What the
+    /// alternating schedule ([`super::alternate`]) needs after each field step.
+    pub fn resume(original: &TriMesh, moved: &TriMesh, field: &[f64], params: ReshapeParams) -> Result<ReshapeSolver, ReshapeError> {
         validate_params(&params)?;
-        validate_field(mesh, field)?;
-        let (unit_mesh, length_scale) = mesh.unit_scaled();
-        let (low, high) = mesh.bounding_box();
+        validate_field(original, field)?;
+        if moved.faces() != original.faces() || moved.vertex_count() != original.vertex_count() {
+            return Err(ReshapeError::InvalidParameter { name: "moved", message: "the moved mesh must have the original's vertices and faces".into() });
+        }
+        let (unit_mesh, length_scale) = original.unit_scaled();
+        let (low, high) = original.bounding_box();
         let tolerance = params.tolerance.length((high - low).norm()) * length_scale;
         let curves = CurveStar::all(&unit_mesh, field);
         if curves.is_empty() {
             return Err(ReshapeError::NoCurveVertices);
         }
+        let start = moved.try_scaled(length_scale)?;
         let original = Original::new(unit_mesh.clone());
-        let lin = Linearisation::new(unit_mesh.clone(), &curves, &original);
+        let lin = Linearisation::new(start.clone(), &curves, &original);
         let problem = SurfaceProblem::new(&unit_mesh, curves, lin, params.weights, params.theta_degrees);
         let lm = LevenbergMarquardt::new(&problem, params.lm.clone())?;
         let mut x = vec![0.0; problem.variable_count()];
-        for (chunk, p) in x.chunks_exact_mut(3).zip(unit_mesh.positions()) {
+        for (chunk, p) in x.chunks_exact_mut(3).zip(start.positions()) {
             chunk.copy_from_slice(p.as_slice());
         }
         let mut solver = ReshapeSolver {
