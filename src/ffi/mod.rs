@@ -12,7 +12,7 @@
 //! metrics ([`LmlStrips`]), each a handle module with `lml_<handle>_new` / `_free` and two-call
 //! array outputs, and the initialisation of Sec. 3.2.2: boundary start points, traced guide
 //! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes; and nets of two
-//! families ([`LmlNet`], paper Sec. 4.1).
+//! families ([`LmlNet`], paper Sec. 4.1); surface optimisation ([`LmlReshape`], Sec. 3.3).
 //!
 //! The header is generated from this module by cbindgen (configuration in `cbindgen.toml`);
 //! `tests/ffi_header.rs` fails when the committed header is stale and rewrites it when
@@ -49,6 +49,7 @@ mod guides;
 mod initial_fields;
 mod fabrication;
 mod net;
+mod reshape;
 
 pub use boundary_starts::*;
 pub use curves::*;
@@ -64,6 +65,7 @@ pub use live_handles::lml_debug_live_handles;
 pub use mesh::*;
 pub use net::*;
 pub use report::*;
+pub use reshape::*;
 pub use search::*;
 pub use session::*;
 pub use status::*;
