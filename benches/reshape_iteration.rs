@@ -10,8 +10,7 @@
 mod support;
 
 use lamella::reshape::{ReshapeParams, ReshapeSolver, Tolerance};
-use std::time::Instant;
-use support::roof;
+use support::{median_seconds, roof};
 
 const SAMPLES: usize = 21;
 
@@ -30,15 +29,10 @@ fn main() {
         let mut solver = ReshapeSolver::new(&mesh, &field, params).expect("valid input");
         solver.step(10).expect("solver runs");
         let before = solver.iterations();
-        let mut times: Vec<f64> = (0..SAMPLES)
-            .map(|_| {
-                let started = Instant::now();
-                solver.step(1).expect("solver runs");
-                started.elapsed().as_secs_f64()
-            })
-            .collect();
+        let median = median_seconds(SAMPLES, || {
+            solver.step(1).expect("solver runs");
+        });
         assert_eq!(solver.iterations(), before + SAMPLES, "every sample ran an iteration");
-        times.sort_by(f64::total_cmp);
-        println!("| {} | {:.1} ms | {paper} |", mesh.vertex_count(), 1e3 * times[SAMPLES / 2]);
+        println!("| {} | {:.1} ms | {paper} |", mesh.vertex_count(), 1e3 * median);
     }
 }
