@@ -109,11 +109,14 @@ pub fn displacement_preview_svg(mesh: &TriMesh, pattern: &StripPattern, displace
 
 /// The shaded view of `strips` (each quad in its colour) over the surface `mesh`, if given.
 pub fn strips_view_svg(mesh: Option<&TriMesh>, strips: &[ColouredStrip], title: &str) -> String {
-    view_svg(mesh.map(|m| (m, &(|_| SURFACE_RGB) as &dyn Fn(usize) -> [f64; 3])), strips, title)
+    view_svg(mesh.map(|m| (m, &(|_| SURFACE_RGB) as FaceColours)), strips, title)
 }
 
+/// The colour of each face of the surface, by face index.
+type FaceColours<'a> = &'a dyn Fn(usize) -> [f64; 3];
+
 /// [`strips_view_svg`] with each face of the surface in the colour `face_rgb` gives it.
-fn view_svg(surface: Option<(&TriMesh, &dyn Fn(usize) -> [f64; 3])>, strips: &[ColouredStrip], title: &str) -> String {
+fn view_svg(surface: Option<(&TriMesh, FaceColours)>, strips: &[ColouredStrip], title: &str) -> String {
     let camera = Camera::default_view();
     let mut facets: Vec<Facet> = Vec::new();
     if let Some((mesh, face_rgb)) = surface {
