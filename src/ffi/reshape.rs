@@ -172,7 +172,11 @@ pub unsafe extern "C" fn lml_reshape_positions(reshape: *const LmlReshape, xyz: 
     guarded(|| {
         // SAFETY (both blocks): live handle; `xyz` writable for `capacity` doubles; `needed` writable.
         let reshape = unsafe { handle(reshape, "reshape") }?;
-        let flat: Vec<f64> = reshape.solver.positions().iter().flat_map(|p| [p.x, p.y, p.z]).collect();
+        let positions = reshape.solver.positions();
+        let mut flat = Vec::with_capacity(3 * positions.len());
+        for p in &positions {
+            flat.extend_from_slice(p.as_slice());
+        }
         unsafe { copy_out(&flat, xyz, capacity, needed, "xyz") }
     })
 }

@@ -75,16 +75,27 @@ impl SurfaceProblem {
         let mut fair_offsets = vec![0];
         let mut fair_variables = Vec::new();
         for v in 0..n {
-            fair_variables.extend(lin.hessian.vertex_variables(v).iter().flat_map(|&w| triple(w)));
+            for &w in lin.hessian.vertex_variables(v) {
+                fair_variables.extend_from_slice(&triple(w));
+            }
             fair_offsets.push(fair_variables.len());
         }
         let mut curve_offsets = vec![0];
         let mut curve_variables = Vec::new();
         for (k, curve) in curves.iter().enumerate() {
-            curve_variables.extend(curve.vertices().into_iter().flat_map(triple));
+            for w in curve.vertices() {
+                curve_variables.extend_from_slice(&triple(w));
+            }
             let first = (3 * n + AUXILIARIES * k) as u32;
             curve_variables.extend(first..first + AUXILIARIES as u32);
             curve_offsets.push(curve_variables.len());
+        }
+        // Plain loops: valgrind flags the nested flat_map of arrays this replaced (uninitialised
+        // reads inside the optimised array iterator).
+        let mut edge_variables = Vec::with_capacity(6 * original.edges().len());
+        for &[a, b] in original.edges() {
+            edge_variables.extend_from_slice(&triple(a));
+            edge_variables.extend_from_slice(&triple(b));
         }
         let positions = original.positions();
         let rest_lengths = original.edges().iter().map(|e| (positions[e[1] as usize] - positions[e[0] as usize]).norm()).collect();
@@ -94,7 +105,7 @@ impl SurfaceProblem {
             fair_offsets,
             fair_variables,
             edges: original.edges().to_vec(),
-            edge_variables: original.edges().iter().flat_map(|e| e.iter().flat_map(|&v| triple(v))).collect(),
+            edge_variables,
             rest_lengths,
             original_positions: positions.to_vec(),
             curve_offsets,
