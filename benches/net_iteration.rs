@@ -10,8 +10,7 @@ mod support;
 
 use lamella::field::Family;
 use lamella::net::{NetParams, NetSolver};
-use std::time::Instant;
-use support::roof;
+use support::{median_seconds, roof};
 
 const SAMPLES: usize = 21;
 
@@ -29,14 +28,9 @@ fn main() {
         params.field.schedule.clear();
         let mut solver = NetSolver::new(&mesh, &[f, g], params).expect("valid input");
         solver.step(10).expect("solver runs");
-        let mut times: Vec<f64> = (0..SAMPLES)
-            .map(|_| {
-                let started = Instant::now();
-                solver.step(1).expect("solver runs");
-                started.elapsed().as_secs_f64()
-            })
-            .collect();
-        times.sort_by(f64::total_cmp);
-        println!("| {} | {:.1} ms | {paper} |", mesh.vertex_count(), 1e3 * times[SAMPLES / 2]);
+        let median = median_seconds(SAMPLES, || {
+            solver.step(1).expect("solver runs");
+        });
+        println!("| {} | {:.1} ms | {paper} |", mesh.vertex_count(), 1e3 * median);
     }
 }

@@ -211,6 +211,11 @@ typedef struct LmlMesh LmlMesh;
 // variables and the solver state. Create it with `lml_net_new`, release it with `lml_net_free`.
 typedef struct LmlNet LmlNet;
 
+// A surface optimisation session (opaque): the original surface, the fixed field, the moving
+// positions with their auxiliary variables and the solver state. Create it with
+// `lml_reshape_new`, release it with `lml_reshape_free`.
+typedef struct LmlReshape LmlReshape;
+
 // A start search (opaque). Create it with `lml_search_new`, step it with `lml_search_step`
 // until it returns `LML_STATUS_OK`, read its candidates, take the field with
 // `lml_search_field`, release it with `lml_search_free`.
@@ -604,6 +609,30 @@ typedef struct LmlNetReport {
   // The weighted energy being minimised.
   double energy_total;
 } LmlNetReport;
+
+// The state of a surface optimisation after `lml_reshape_step` (written by the library; the
+// caller owns the struct). Lengths in the mesh's units, angles in degrees; energies unweighted
+// on the problem scaled to mean edge length 1.
+typedef struct LmlReshapeReport {
+  // Iterations run since the session was created.
+  uint64_t iterations;
+  // 1 when converged (further steps do nothing), else 0.
+  uint64_t converged;
+  // RMS and maximum of |θ_measured − θ| over the curve vertices (the optimiser's own measure).
+  double angle_error_rms_degrees;
+  double angle_error_max_degrees;
+  // Largest and RMS distance of a vertex from the original surface, and its bound.
+  double max_deviation;
+  double rms_deviation;
+  double tolerance;
+  // Largest relative change of an edge length.
+  double max_edge_change;
+  // E^S_angle, E^S_fair, E^S_close (Eq. 14) and E^S_edge (Eq. 15).
+  double energy_angle;
+  double energy_fair;
+  double energy_close;
+  double energy_edge;
+} LmlReshapeReport;
 
 // Pseudo-geodesics: the binormal keeps the angle `theta_degrees` to the surface normal
 // (`E_angle`, paper Eq. 8–10).
@@ -1627,6 +1656,62 @@ LmlStatus lml_strips_view_html(const struct LmlStrips *strips,
                                uint8_t *text,
                                size_t capacity,
                                size_t *needed);
+
+// Starts moving `mesh` so that the level sets of `field` become P-curves of the angle θ, with
+// the paper's Table 3 weights (Fig. 17(b)).
+//
+// - `mesh`: the original surface (copied).
+// - `field`: `n` doubles, one per vertex (held fixed; finite, not constant, magnitude at most
+//   1e100). Copied.
+// - `theta_degrees`: the target angle, in [0°, 180°].
+// - `tolerance`: the largest distance of a vertex from the original surface, > 0: a length in
+//   the mesh's units when `tolerance_is_fraction` is 0, else a fraction of the mesh's
+//   bounding-box diagonal (0.005 for 0.5 %).
+// - `out`: receives the new session (release with `lml_reshape_free`); NULL on failure.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `n` ≠ vertex count, a
+// value out of range, naming it); `LML_STATUS_SINGULAR_FIELD` (a constant field, or no interior
+// vertex with a regular level curve).
+LmlStatus lml_reshape_new(const struct LmlMesh *mesh,
+                          const double *field,
+                          size_t n,
+                          double theta_degrees,
+                          double tolerance,
+                          uint32_t tolerance_is_fraction,
+                          struct LmlReshape **out);
+
+// Releases a session. NULL is accepted and ignored. The handle must not be used again.
+void lml_reshape_free(struct LmlReshape *reshape);
+
+// Runs at most `max_iterations` iterations and writes the state to `*report` (may be NULL).
+//
+// Returns `LML_STATUS_MORE` (step again), `LML_STATUS_CONVERGED`, `LML_STATUS_INVALID_ARGUMENT`
+// (NULL or misaligned pointer) or `LML_STATUS_DID_NOT_CONVERGE` (an iteration failed
+// numerically; the surface keeps its last good state).
+LmlStatus lml_reshape_step(struct LmlReshape *reshape,
+                           uint32_t max_iterations,
+                           struct LmlReshapeReport *report);
+
+// Writes the state after the last step (or after creation) to `*report`.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_reshape_report(const struct LmlReshape *reshape, struct LmlReshapeReport *report);
+
+// Copies the current vertex positions (xyz per vertex, `3 n` doubles, in the mesh's units) into
+// `xyz` with the two-call pattern: `*needed` receives `3 n`; with `capacity` below it nothing is
+// copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned (`xyz` may be NULL then). Returns
+// `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT` (NULL
+// session or `needed`).
+LmlStatus lml_reshape_positions(const struct LmlReshape *reshape,
+                                double *xyz,
+                                size_t capacity,
+                                size_t *needed);
+
+// Copies the distance of every vertex from the original surface (`n` doubles, the mesh's
+// units) into `values` with the two-call pattern as `lml_reshape_positions`.
+LmlStatus lml_reshape_deviations(const struct LmlReshape *reshape,
+                                 double *values,
+                                 size_t capacity,
+                                 size_t *needed);
 
 #ifdef __cplusplus
 }  // extern "C"

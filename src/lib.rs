@@ -19,6 +19,7 @@ pub mod input;
 pub mod mesh;
 pub mod net;
 pub mod quality;
+pub mod reshape;
 pub mod solver;
 pub mod strips;
 pub mod surfaces;

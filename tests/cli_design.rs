@@ -120,6 +120,7 @@ fn a_surface_without_the_family_exits_three_with_the_verdict() {
     let last = stderr(&output).lines().last().unwrap_or_default().to_string();
     assert!(last.starts_with("lamella: no acceptable family: strip"), "{last}");
     assert!(last.contains("worst: strip") && last.contains("° off") && last.contains("try"), "{last}");
+    assert!(last.contains("lamella reshape --mesh M.obj --field d/field.csv --theta 10"), "the verdict names the remedy of Sec. 3.3: {last}");
     let report = read_json(&dir.path("d/report.json"));
     assert_eq!(report["strips"]["acceptable"], false);
     assert!(report["strips"]["overall"]["max_quad_angle_error_degrees"].as_f64().expect("error") > 2.0);

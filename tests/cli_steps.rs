@@ -132,7 +132,7 @@ fn config_file_sets_parameters_and_flags_win() {
 #[test]
 fn help_explains_every_subcommand() {
     let dir = Scratch::new("help");
-    for command in [&["--help"][..], &["design", "--help"], &["info", "--help"], &["field", "--help"], &["strips", "--help"], &["unroll", "--help"], &["metrics", "--help"]] {
+    for command in [&["--help"][..], &["design", "--help"], &["info", "--help"], &["field", "--help"], &["strips", "--help"], &["unroll", "--help"], &["metrics", "--help"], &["reshape", "--help"]] {
         let output = lamella(&dir.0, command);
         assert_ok(&output);
         let help = stdout(&output);

@@ -17,3 +17,16 @@ pub fn solver(mesh: &TriMesh) -> FieldSolver {
     let initial: Vec<f64> = mesh.positions().iter().map(|p| p.x).collect();
     FieldSolver::new(mesh, &initial, FieldParams::pseudo_geodesic(60.0)).expect("valid input")
 }
+
+/// The median wall time in seconds of `samples` calls of `step`.
+pub fn median_seconds(samples: usize, mut step: impl FnMut()) -> f64 {
+    let mut times: Vec<f64> = (0..samples)
+        .map(|_| {
+            let started = std::time::Instant::now();
+            step();
+            started.elapsed().as_secs_f64()
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[samples / 2]
+}

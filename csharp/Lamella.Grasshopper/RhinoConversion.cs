@@ -93,12 +93,22 @@ namespace Lamella.Grasshopper
             return curves;
         }
 
-        /// <summary>A quad mesh from vertices (x, y, z each) and four indices per quad.</summary>
-        public static Mesh QuadMesh(double[] xyz, int[] quads)
+        /// <summary>A quad mesh: four indices into <paramref name="xyz"/> per quad.</summary>
+        public static Mesh QuadMesh(double[] xyz, int[] quads) => FaceMesh(xyz, quads, 4);
+
+        /// <summary>A triangle mesh (each triangle a face whose last two corners coincide, Rhino's triangle form).</summary>
+        public static Mesh TriangleMesh(double[] xyz, int[] triangles) => FaceMesh(xyz, triangles, 3);
+
+        /// <summary>The mesh of the faces of <paramref name="corners"/> indices each, with normals.</summary>
+        private static Mesh FaceMesh(double[] xyz, int[] faces, int corners)
         {
             var mesh = new Mesh();
             for (int i = 0; i < xyz.Length / 3; i++) mesh.Vertices.Add(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
-            for (int q = 0; q < quads.Length / 4; q++) mesh.Faces.AddFace(quads[4 * q], quads[4 * q + 1], quads[4 * q + 2], quads[4 * q + 3]);
+            for (int f = 0; f < faces.Length / corners; f++)
+            {
+                int k = corners * f;
+                mesh.Faces.AddFace(faces[k], faces[k + 1], faces[k + 2], faces[k + corners - 1]);
+            }
             mesh.Normals.ComputeNormals();
             mesh.Compact();
             return mesh;

@@ -40,6 +40,7 @@ namespace Lamella.Tests
             { "LmlPiece", typeof(Piece) },
             { "LmlFabricationSummary", typeof(FabricationSummary) },
             { "LmlNetReport", typeof(NetReportRecord) },
+            { "LmlReshapeReport", typeof(ReshapeReportRecord) },
         };
 
         /// <summary>Integer typedefs of the header and the managed enum each is carried by (also in arrays).</summary>

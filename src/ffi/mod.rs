@@ -12,8 +12,8 @@
 //! metrics ([`LmlStrips`]), each a handle module with `lml_<handle>_new` / `_free` and two-call
 //! array outputs, and the initialisation of Sec. 3.2.2: boundary start points, traced guide
 //! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes; and nets of two
-//! families ([`LmlNet`], paper Sec. 4.1); and the interactive 3D viewer page of strips
-//! (`lml_strips_view_html`).
+//! families ([`LmlNet`], paper Sec. 4.1); surface optimisation ([`LmlReshape`], Sec. 3.3);
+//! and the interactive 3D viewer page of strips (`lml_strips_view_html`).
 //!
 //! The header is generated from this module by cbindgen (configuration in `cbindgen.toml`);
 //! `tests/ffi_header.rs` fails when the committed header is stale and rewrites it when
@@ -51,6 +51,7 @@ mod initial_fields;
 mod fabrication;
 mod net;
 mod view;
+mod reshape;
 
 pub use boundary_starts::*;
 pub use curves::*;
@@ -66,6 +67,7 @@ pub use live_handles::lml_debug_live_handles;
 pub use mesh::*;
 pub use net::*;
 pub use report::*;
+pub use reshape::*;
 pub use search::*;
 pub use session::*;
 pub use status::*;

@@ -409,7 +409,7 @@ pub(crate) fn validate_params(params: &FieldParams) -> Result<(), FieldError> {
 pub const MAX_LM_TRIALS: usize = 100;
 
 /// The Levenberg–Marquardt options are finite and ordered, with 1 to [`MAX_LM_TRIALS`] trials.
-fn validate_lm(lm: &LmOptions) -> Result<(), FieldError> {
+pub(crate) fn validate_lm(lm: &LmOptions) -> Result<(), FieldError> {
     let bad = |name: &'static str, message: String| Err(FieldError::InvalidParameter { name, message });
     if !(1..=MAX_LM_TRIALS).contains(&lm.max_trials) {
         return bad("lm.max_trials", format!("must be 1 to {MAX_LM_TRIALS}, got {}", lm.max_trials));

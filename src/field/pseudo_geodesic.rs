@@ -55,26 +55,52 @@ pub(crate) fn evaluate(
 ) {
     let aux_column = stencil.vertices.len();
     let columns = aux_column + AUXILIARIES;
-    let n = chords.normal;
     let b = Vec3::new(aux[0], aux[1], aux[2]);
     let u = Vec3::new(aux[3], aux[4], aux[5]);
-    let (bn, bu) = (b.dot(&n), b.dot(&u));
-    let (ep, eq, t) = (chords.to_p.unit(), chords.to_q.unit(), chords.tangent.unit());
+    let unit = [chords.to_p.unit(), chords.to_q.unit(), chords.tangent.unit()];
+    let Some(jac) = jacobian else {
+        frame_rows(&chords.normal, aux, &unit, target, scale, residuals, None);
+        return;
+    };
+    frame_rows(&chords.normal, aux, &unit, target, scale, residuals, Some((&mut *jac, columns, aux_column)));
+    chords.to_p.add_normalized_dot_partials(stencil, &b, scale, &mut jac[2 * columns..3 * columns]);
+    chords.to_q.add_normalized_dot_partials(stencil, &b, scale, &mut jac[3 * columns..4 * columns]);
+    chords.tangent.add_normalized_dot_partials(stencil, &u, scale, &mut jac[5 * columns..6 * columns]);
+}
+
+/// The rows of the table above for the normal `n`, `aux = [b, u]` and the chord directions
+/// `[ê_p, ê_q, t]`, scaled by `scale`, into `residuals`; with `jacobian = (J, columns, b_column)`
+/// also their partials in `b` and `u` (columns `b_column..b_column + 6` of the row-major `J`).
+/// What the rows' dependence on the chords adds to `J` is the caller's: the chords come from
+/// the field's level jet here, from the moving mesh in the surface optimisation of Sec. 3.3
+/// ([`crate::reshape`]).
+pub(crate) fn frame_rows(
+    n: &Vec3,
+    aux: &[f64],
+    [ep, eq, t]: &[Vec3; 3],
+    target: TargetAngle,
+    scale: f64,
+    residuals: &mut [f64],
+    jacobian: Option<(&mut [f64], usize, usize)>,
+) {
+    let b = Vec3::new(aux[0], aux[1], aux[2]);
+    let u = Vec3::new(aux[3], aux[4], aux[5]);
+    let (bn, bu) = (b.dot(n), b.dot(&u));
     let values = [
         bn * bn - target.cos * target.cos,
         bn * bu - target.sin * target.cos,
-        b.dot(&ep),
-        b.dot(&eq),
+        b.dot(ep),
+        b.dot(eq),
         b.dot(&b) - 1.0,
-        u.dot(&t),
-        u.dot(&n),
+        u.dot(t),
+        u.dot(n),
         u.dot(&u) - 1.0,
     ];
     for (r, value) in residuals.iter_mut().zip(values) {
         *r = scale * value;
     }
-    let Some(jac) = jacobian else { return };
-    let (bc, uc) = (aux_column, aux_column + 3);
+    let Some((jac, columns, bc)) = jacobian else { return };
+    let uc = bc + 3;
     let mut set = |row: usize, col: usize, d: Vec3| {
         for k in 0..3 {
             jac[row * columns + col + k] += scale * d[k];
@@ -83,13 +109,10 @@ pub(crate) fn evaluate(
     set(0, bc, n * (2.0 * bn));
     set(1, bc, n * bu + u * bn);
     set(1, uc, b * bn);
-    set(2, bc, ep);
-    set(3, bc, eq);
+    set(2, bc, *ep);
+    set(3, bc, *eq);
     set(4, bc, b * 2.0);
-    set(5, uc, t);
-    set(6, uc, n);
+    set(5, uc, *t);
+    set(6, uc, *n);
     set(7, uc, u * 2.0);
-    chords.to_p.add_normalized_dot_partials(stencil, &b, scale, &mut jac[2 * columns..3 * columns]);
-    chords.to_q.add_normalized_dot_partials(stencil, &b, scale, &mut jac[3 * columns..4 * columns]);
-    chords.tangent.add_normalized_dot_partials(stencil, &u, scale, &mut jac[5 * columns..6 * columns]);
 }

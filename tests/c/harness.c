@@ -26,6 +26,7 @@ int main(int argc, char **argv)
     test_guides(&cylinder);
     test_search(&small);
     test_net(&small);
+    test_reshape(&small);
     field = test_solve(&cylinder);
     CHECK(field != NULL);
     if (field != NULL) {

@@ -49,4 +49,8 @@ void test_view(const LmlCurves *curves);
 /* A net of two families (geodesic circles and rulings on the cylinder): every invalid input,
  * stepping to convergence, both fields with the two-call pattern against the cylinder's axis. */
 void test_net(const Cylinder *cylinder);
+
+/* Surface optimisation (Sec. 3.3) of the cylinder towards 45 degrees within an absolute tolerance:
+ * every invalid input, stepping, positions and deviations against the distance from the axis. */
+void test_reshape(const Cylinder *cylinder);
 #endif

@@ -59,4 +59,10 @@ namespace Lamella.Interop
         public NetHandle() { }
         protected override bool ReleaseHandle() { NativeMethods.lml_net_free(handle); return true; }
     }
+
+    internal sealed class ReshapeHandle : LamellaHandle
+    {
+        public ReshapeHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_reshape_free(handle); return true; }
+    }
 }

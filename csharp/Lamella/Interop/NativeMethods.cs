@@ -88,6 +88,19 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_net_field(NetHandle net, uint k, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
 
+        // LmlReshape.
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_reshape_new(MeshHandle mesh, double[] field, UIntPtr n, double thetaDegrees, double tolerance,
+            uint toleranceIsFraction, out ReshapeHandle reshape);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_reshape_free(IntPtr reshape);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_reshape_step(ReshapeHandle reshape, uint maxIterations, out ReshapeReportRecord report);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_reshape_report(ReshapeHandle reshape, out ReshapeReportRecord report);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_reshape_positions(ReshapeHandle reshape, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_reshape_deviations(ReshapeHandle reshape, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_field_save(FieldHandle field, [Out] byte[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)]

@@ -79,4 +79,25 @@ namespace Lamella.Interop
         public ulong FacesBelowMin;
         public double EnergyTotal;
     }
+
+    /// <summary>
+    /// <c>LmlReshapeReport</c>: the state of a surface optimisation after a step (lengths in the mesh's units, angles
+    /// in degrees). The binding hands it out as <see cref="ReshapeReport"/>.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct ReshapeReportRecord
+    {
+        public ulong Iterations;
+        public ulong Converged;
+        public double AngleErrorRmsDegrees;
+        public double AngleErrorMaxDegrees;
+        public double MaxDeviation;
+        public double RmsDeviation;
+        public double Tolerance;
+        public double MaxEdgeChange;
+        public double EnergyAngle;
+        public double EnergyFair;
+        public double EnergyClose;
+        public double EnergyEdge;
+    }
 }

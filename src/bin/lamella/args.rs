@@ -52,6 +52,12 @@ pub enum Command {
     /// report.json, surface.obj, curves.obj) when it is missing. Open it in any browser: one
     /// self-contained file, no network needed.
     View(ViewArgs),
+    /// Move the surface a little so that the level sets of a fixed field become P-curves of θ
+    /// (paper Sec. 3.3, Fig. 17), within a bound on the deviation from the original surface.
+    /// Writes surface.obj, deviation.csv, curves.obj, strips.obj, rulings.obj, preview.svg
+    /// (coloured by displacement), report.json; exits 3 when the strips on the moved surface
+    /// still miss θ.
+    Reshape(ReshapeArgs),
 }
 
 /// Progress and summary output.
@@ -392,4 +398,39 @@ pub struct ViewArgs {
     /// An output directory of `lamella design` (or `strips`, `net`).
     #[arg(value_name = "DIR")]
     pub dir: PathBuf,
+}
+
+#[derive(Args, Debug, Clone)]
+pub struct ReshapeArgs {
+    #[command(flatten)]
+    pub mesh: MeshArgs,
+    /// The field, one value per mesh vertex (field.csv of `field` or `design`); it stays fixed.
+    #[arg(long = "field", value_name = "field.csv", required_unless_present = "session", conflicts_with = "session")]
+    pub field_csv: Option<PathBuf>,
+    /// Take mesh and field from a saved session (session.bin of `field` or `design`) instead of
+    /// --mesh and --field.
+    #[arg(long, value_name = "session.bin", conflicts_with = "mesh")]
+    pub session: Option<PathBuf>,
+    /// Target angle θ between the binormals of the level curves and the surface normal, in
+    /// degrees, 0 to 180 exclusive.
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
+    pub theta: f64,
+    /// Largest distance of a vertex from the original surface: a length (metres, or with mm, cm
+    /// or m) or a percentage of the bounding-box diagonal such as 0.5%.
+    #[arg(long, value_name = "LENGTH|P%", default_value = "1%", allow_hyphen_values = true)]
+    pub tolerance: String,
+    /// Most Levenberg–Marquardt iterations of the surface, 1 to 100000.
+    #[arg(long, value_name = "N", default_value_t = 300)]
+    pub max_iterations: usize,
+    /// Number of strips on the moved surface, 1 to 1000.
+    #[arg(long, value_name = "N", default_value_t = 20)]
+    pub strips: usize,
+    /// Largest angle error of a strip quad in degrees, between 0 and 180 exclusive: above it the
+    /// command exits 3, "no acceptable family" (as `design`).
+    #[arg(long, value_name = "DEGREES", default_value_t = 2.0, allow_negative_numbers = true)]
+    pub angle_tolerance: f64,
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub verbosity: VerbosityArgs,
 }

@@ -14,8 +14,8 @@ pub const DEFAULT_MAX_ITERATIONS: usize = 400;
 pub const DEFAULT_STRIPS: usize = 20;
 pub const DEFAULT_OUT: &str = "lamella-out";
 pub const DEFAULT_GUIDE_ANGLE: f64 = 90.0;
-const MAX_ITERATIONS_LIMIT: usize = 100_000;
-const MAX_STRIPS: usize = 1000;
+pub const MAX_ITERATIONS_LIMIT: usize = 100_000;
+pub const MAX_STRIPS: usize = 1000;
 const MAX_GUIDES: usize = 100;
 
 /// The keys a `design.toml` may set (all optional, same units as the flags).
@@ -264,7 +264,7 @@ pub fn check_theta(theta: f64) -> CliResult<()> {
     }
 }
 
-fn out_of_range(name: &str, value: impl std::fmt::Display, range: &str) -> CliError {
+pub fn out_of_range(name: &str, value: impl std::fmt::Display, range: &str) -> CliError {
     CliError::bad_input(format!("parameter --{name} = {value} is out of range (allowed: {range})"))
 }
 

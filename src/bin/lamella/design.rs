@@ -102,7 +102,12 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
             started.elapsed().as_secs_f64()
         ),
     )?;
-    verdict(&run)
+    verdict(&run).map_err(|error| match error {
+        CliError::NoAcceptableFamily(message) => CliError::NoAcceptableFamily(format!(
+            "{message}; if no family of θ = {theta}° exists on this surface, move the surface a little: lamella reshape --mesh M.obj --field {target}/field.csv --theta {theta} --tolerance 1%"
+        )),
+        other => other,
+    })
 }
 
 /// Exit code 3 with the verdict's message when the strips miss θ or have flipped quads.

@@ -21,6 +21,7 @@ mod net_cmd;
 mod output_dir;
 mod progress;
 mod report_json;
+mod reshape_cmd;
 mod start_field;
 mod strip_obj;
 mod strips_cmd;
@@ -67,5 +68,6 @@ fn run(cli: &Cli) -> CliResult<()> {
         Some(Command::Fabricate(args)) => fabricate::run(args),
         Some(Command::Net(args)) => net_cmd::run(args),
         Some(Command::View(args)) => view_cmd::run(args),
+        Some(Command::Reshape(args)) => reshape_cmd::run(args),
     }
 }

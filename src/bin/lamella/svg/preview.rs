@@ -79,25 +79,50 @@ pub struct ColouredStrip<'a> {
     pub quad_rgb: Vec<[f64; 3]>,
 }
 
-/// The preview image of `mesh` with `pattern`.
-pub fn preview_svg(mesh: &TriMesh, pattern: &StripPattern) -> String {
-    let strips: Vec<ColouredStrip> = pattern
+/// Each strip of `pattern` in its own colour.
+fn coloured_strips(pattern: &StripPattern) -> Vec<ColouredStrip<'_>> {
+    pattern
         .strips
         .iter()
         .enumerate()
         .map(|(id, s)| ColouredStrip { left: &s.left, right: &s.right, quad_rgb: vec![strip_rgb(id); s.left.len().saturating_sub(1)] })
-        .collect();
-    strips_view_svg(Some(mesh), &strips, "lamella preview: surface and strips")
+        .collect()
+}
+
+/// The preview image of `mesh` with `pattern`.
+pub fn preview_svg(mesh: &TriMesh, pattern: &StripPattern) -> String {
+    strips_view_svg(Some(mesh), &coloured_strips(pattern), "lamella preview: surface and strips")
+}
+
+/// The preview of a reshaped surface: each face coloured by the mean displacement of its
+/// corners (`displacement`, one per vertex) from white (none) to red (the largest), with the strips.
+pub fn displacement_preview_svg(mesh: &TriMesh, pattern: &StripPattern, displacement: &[f64]) -> String {
+    let largest = displacement.iter().copied().filter(|d| d.is_finite()).fold(0.0, f64::max);
+    let face_rgb = |f: usize| {
+        let mean = mesh.faces()[f].iter().map(|&v| displacement.get(v as usize).copied().unwrap_or(0.0)).sum::<f64>() / 3.0;
+        let k = if largest > 0.0 && mean.is_finite() { (mean / largest).clamp(0.0, 1.0) } else { 0.0 };
+        [0.95, 0.95 * (1.0 - 0.8 * k), 0.95 * (1.0 - 0.8 * k)]
+    };
+    let title = format!("lamella reshape: displacement from the original surface (white 0, red {largest:.4})");
+    view_svg(Some((mesh, &face_rgb)), &coloured_strips(pattern), &title)
 }
 
 /// The shaded view of `strips` (each quad in its colour) over the surface `mesh`, if given.
 pub fn strips_view_svg(mesh: Option<&TriMesh>, strips: &[ColouredStrip], title: &str) -> String {
+    view_svg(mesh.map(|m| (m, &(|_| SURFACE_RGB) as FaceColours)), strips, title)
+}
+
+/// The colour of each face of the surface, by face index.
+type FaceColours<'a> = &'a dyn Fn(usize) -> [f64; 3];
+
+/// [`strips_view_svg`] with each face of the surface in the colour `face_rgb` gives it.
+fn view_svg(surface: Option<(&TriMesh, FaceColours)>, strips: &[ColouredStrip], title: &str) -> String {
     let camera = Camera::default_view();
     let mut facets: Vec<Facet> = Vec::new();
-    if let Some(mesh) = mesh {
+    if let Some((mesh, face_rgb)) = surface {
         for (f, face) in mesh.faces().iter().enumerate() {
             let corners: Vec<Vec3> = face.iter().map(|&v| mesh.positions()[v as usize]).collect();
-            let fill = camera.shade(SURFACE_RGB, &mesh.face_normals()[f]);
+            let fill = camera.shade(face_rgb(f), &mesh.face_normals()[f]);
             facets.push(Facet { depth: 0.0, lift: 0.0, stroke: fill.clone(), fill, corners });
         }
     }

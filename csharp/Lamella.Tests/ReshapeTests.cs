@@ -1,0 +1,70 @@
+using System;
+using NUnit.Framework;
+
+namespace Lamella.Tests
+{
+    /// <summary>
+    /// Surface optimisation through the binding (paper Sec. 3.3): the cylinder moved towards a 45° family within an
+    /// absolute tolerance, the deviations checked against the distance from the axis; invalid arguments.
+    /// </summary>
+    [TestFixture]
+    public class ReshapeTests
+    {
+        [Test]
+        public void TheCylinderMovesWithinTheTolerance()
+        {
+            var cylinder = new Cylinder(16, 10, 11);
+            const double tolerance = 0.2;
+            using (var mesh = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            using (var reshape = new ReshapeSolver(mesh, cylinder.InitialField, 45.0, tolerance, false))
+            {
+                Assert.AreEqual(0, reshape.Report.Iterations);
+                Assert.AreEqual(tolerance, reshape.Report.Tolerance, 1e-12);
+                ReshapeReport report = reshape.Report;
+                for (int k = 0; k < 30 && !report.IsConverged; k++)
+                {
+                    report = reshape.Step(10);
+                }
+                Assert.Greater(report.Iterations, 0);
+                Assert.Greater(report.MaxDeviation, 0.0);
+                Assert.LessOrEqual(report.MaxDeviation, tolerance);
+                double[] xyz = reshape.Positions();
+                double[] deviations = reshape.Deviations();
+                Assert.AreEqual(3 * cylinder.VertexCount, xyz.Length);
+                Assert.AreEqual(cylinder.VertexCount, deviations.Length);
+                double largest = 0.0;
+                for (int v = 0; v < cylinder.VertexCount; v++)
+                {
+                    // The original surface lies between the cylinder and its chords (sagitta of the widest cell,
+                    // 1.5 x 150°/16 wide, 10 (1 − cos 7.03°) = 0.075): a
+                    // vertex's distance from it is at least its distance from the cylinder less that.
+                    double radial = Math.Abs(Math.Sqrt(xyz[3 * v] * xyz[3 * v] + xyz[3 * v + 1] * xyz[3 * v + 1]) - Cylinder.Radius);
+                    Assert.GreaterOrEqual(deviations[v], radial - 0.076);
+                    Assert.LessOrEqual(deviations[v], tolerance);
+                    largest = Math.Max(largest, deviations[v]);
+                }
+                Assert.AreEqual(report.MaxDeviation, largest);
+            }
+        }
+
+        [Test]
+        public void InvalidArgumentsAreRefusedByName()
+        {
+            var cylinder = new Cylinder(8, 6, 3);
+            using (var mesh = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            {
+                var field = cylinder.InitialField;
+                var error = Assert.Throws<LamellaException>(() => new ReshapeSolver(mesh, field, 200.0, 0.1, false));
+                StringAssert.Contains("theta", error.Message);
+                error = Assert.Throws<LamellaException>(() => new ReshapeSolver(mesh, field, 45.0, -1.0, true));
+                StringAssert.Contains("tolerance", error.Message);
+                Assert.Throws<LamellaException>(() => new ReshapeSolver(mesh, new double[3], 45.0, 0.1, false));
+                Assert.Throws<ArgumentNullException>(() => new ReshapeSolver(mesh, null, 45.0, 0.1, false));
+                using (var reshape = new ReshapeSolver(mesh, field, 45.0, 0.1, false))
+                {
+                    Assert.Throws<ArgumentOutOfRangeException>(() => reshape.Step(-1));
+                }
+            }
+        }
+    }
+}

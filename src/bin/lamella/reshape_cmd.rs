@@ -1,0 +1,172 @@
+//! `lamella reshape`: the surface optimisation of paper Sec. 3.3 (Fig. 17). The field stays
+//! fixed and the vertices move so that its level sets become P-curves of θ, within a bound on
+//! the deviation from the original surface; then the level curves and strips on the moved
+//! surface, judged as by `design` (exit 3 when they miss θ).
+use crate::args::ReshapeArgs;
+use crate::config::{out_of_range, DEFAULT_OUT, MAX_ITERATIONS_LIMIT, MAX_STRIPS};
+use crate::error::{CliError, CliResult};
+use crate::mesh_input::{load_mesh, mesh_name, read_bytes};
+use crate::output_dir::OutputDir;
+use crate::progress::{note, summary, Verbosity};
+use crate::start_field::read_field_for;
+use crate::strip_obj::{curves_obj, rulings_obj, strips_obj};
+use crate::strips_cmd::{build_strips, strips_summary, StripRun};
+use crate::svg::preview::displacement_preview_svg;
+use lamella::field::FieldSolver;
+use lamella::mesh::{TriMesh, Vec3};
+use lamella::reshape::{ReshapeParams, ReshapeReport, ReshapeSolver, Tolerance};
+use serde_json::{json, Value};
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// Iterations per `step` between progress notes.
+const STEP: usize = 10;
+
+/// Parses `--tolerance`: `P%` of the bounding-box diagonal, or a length.
+pub fn parse_tolerance(text: &str) -> CliResult<Tolerance> {
+    match text.trim().strip_suffix('%') {
+        Some(percent) => {
+            let value: f64 = percent.trim().parse().map_err(|_| CliError::bad_input(format!("--tolerance: `{}` is not a percentage", lamella::input::clip(text))))?;
+            if !(value.is_finite() && value > 0.0 && value <= 100.0) {
+                return Err(out_of_range("tolerance", text, "a length > 0 or a percentage in (0 %, 100 %]"));
+            }
+            Ok(Tolerance::DiagonalFraction(value / 100.0))
+        }
+        None => Ok(Tolerance::Absolute(crate::units::length("--tolerance", text)?)),
+    }
+}
+
+fn check(args: &ReshapeArgs) -> CliResult<()> {
+    if !(args.theta.is_finite() && args.theta > 0.0 && args.theta < 180.0) {
+        return Err(out_of_range("theta", args.theta, "between 0 and 180 degrees, exclusive"));
+    }
+    if !(1..=MAX_ITERATIONS_LIMIT).contains(&args.max_iterations) {
+        return Err(out_of_range("max-iterations", args.max_iterations, &format!("1 to {MAX_ITERATIONS_LIMIT}")));
+    }
+    if !(1..=MAX_STRIPS).contains(&args.strips) {
+        return Err(out_of_range("strips", args.strips, &format!("1 to {MAX_STRIPS}")));
+    }
+    if !(args.angle_tolerance.is_finite() && args.angle_tolerance > 0.0 && args.angle_tolerance < 180.0) {
+        return Err(out_of_range("angle-tolerance", args.angle_tolerance, "between 0 and 180 degrees, exclusive"));
+    }
+    Ok(())
+}
+
+/// The mesh and field to reshape: from a session, or from --mesh and --field.
+fn inputs(args: &ReshapeArgs) -> CliResult<(TriMesh, Vec<f64>, String)> {
+    if let Some(path) = &args.session {
+        let bytes = read_bytes(path)?;
+        let solver = FieldSolver::from_bytes(&bytes).map_err(|e| CliError::bad_input(format!("{}: not a usable field session: {e}", path.display())))?;
+        return Ok((solver.mesh(), solver.field(), format!("session {}", path.display())));
+    }
+    let mesh = load_mesh(args.mesh.mesh.as_deref())?;
+    // Invariant: clap requires --field unless --session is given.
+    let field_path = args.field_csv.as_ref().ok_or_else(|| CliError::bad_input("give --field or --session"))?;
+    let field = read_field_for(&mesh, field_path)?;
+    Ok((mesh, field, mesh_name(args.mesh.mesh.as_deref())))
+}
+
+pub fn run(args: &ReshapeArgs) -> CliResult<()> {
+    let started = Instant::now();
+    let verbosity = Verbosity::from(args.verbosity);
+    check(args)?;
+    let tolerance = parse_tolerance(&args.tolerance)?;
+    let (mesh, field, source) = inputs(args)?;
+    let target: PathBuf = args.out.out.clone().unwrap_or_else(|| PathBuf::from(DEFAULT_OUT));
+    let out = OutputDir::create(&target, args.out.force)?;
+    let params = ReshapeParams { tolerance, ..ReshapeParams::new(args.theta) };
+    let mut solver = ReshapeSolver::new(&mesh, &field, params).map_err(|e| CliError::bad_input(format!("reshape: {e}")))?;
+    note(verbosity, &format!("reshape {source}: {} vertices, θ = {}°, tolerance {:.4} m", mesh.vertex_count(), args.theta, solver.report().tolerance));
+    while solver.iterations() < args.max_iterations && !solver.is_converged() {
+        let report = solver.step(STEP.min(args.max_iterations - solver.iterations())).map_err(|e| CliError::internal(format!("reshape: {e}")))?;
+        if verbosity == Verbosity::Verbose {
+            note(verbosity, &progress_line(&report));
+        }
+    }
+    let surface_seconds = started.elapsed().as_secs_f64();
+    let moved = solver.mesh();
+    let deviations = solver.deviations();
+    let run = build_strips(&moved, &field, args.theta, args.strips, None, args.angle_tolerance)?;
+    let mut surface = Vec::new();
+    moved.write_obj(&mut surface).map_err(|e| CliError::internal(format!("surface.obj: {e}")))?;
+    out.write("surface.obj", surface)?;
+    out.write("deviation.csv", deviation_csv(&mesh, &moved, &deviations))?;
+    out.write("curves.obj", curves_obj(&run.curves))?;
+    out.write("strips.obj", strips_obj(&run.pattern))?;
+    out.write("rulings.obj", rulings_obj(&run.pattern))?;
+    out.write("preview.svg", displacement_preview_svg(&moved, &run.pattern, &deviations))?;
+    let report = report_json(&source, args, &solver, &run, [surface_seconds, started.elapsed().as_secs_f64()]);
+    out.write("report.json", serde_json::to_string_pretty(&report).map_err(|e| CliError::internal(format!("report.json: {e}")))?)?;
+    let target = out.target().display().to_string();
+    out.commit()?;
+    let r = solver.report();
+    summary(
+        verbosity,
+        &format!(
+            "{} iterations{}; deviation max {:.4} m, RMS {:.4} m (tolerance {:.4} m); edge lengths change by up to {:.1} %\n{}\ndone in {:.1} s; wrote {target}/ (surface.obj, deviation.csv, curves.obj, strips.obj, rulings.obj, preview.svg, report.json)",
+            r.iterations,
+            if r.converged { ", converged" } else { "" },
+            r.max_deviation,
+            r.rms_deviation,
+            r.tolerance,
+            100.0 * r.max_edge_change,
+            strips_summary(&run),
+            started.elapsed().as_secs_f64()
+        ),
+    )?;
+    crate::design::verdict(&run)
+}
+
+fn progress_line(r: &ReshapeReport) -> String {
+    format!(
+        "iteration {}: E_angle {:.3e}, E_fair {:.3e}, E_close {:.3e}, E_edge {:.3e}; angle error {:.3}° RMS; deviation {:.4} m",
+        r.iterations, r.energies.angle, r.energies.fair, r.energies.close, r.energies.edge, r.angle_error_rms_degrees, r.max_deviation
+    )
+}
+
+/// deviation.csv: per vertex its displacement and its distance from the original surface.
+fn deviation_csv(original: &TriMesh, moved: &TriMesh, deviations: &[f64]) -> String {
+    let mut text = String::from("vertex,x,y,z,dx,dy,dz,deviation\n");
+    for (v, ((p, o), d)) in moved.positions().iter().zip(original.positions()).zip(deviations).enumerate() {
+        let shift: Vec3 = p - o;
+        let _ = writeln!(text, "{v},{},{},{},{},{},{},{d}", p.x, p.y, p.z, shift.x, shift.y, shift.z);
+    }
+    text
+}
+
+/// JSON has no NaN: non-finite numbers become null.
+fn number(x: f64) -> Value {
+    if x.is_finite() { json!(x) } else { Value::Null }
+}
+
+fn report_json(source: &str, args: &ReshapeArgs, solver: &ReshapeSolver, run: &StripRun, seconds: [f64; 2]) -> Value {
+    let r = solver.report();
+    let w = solver.params().weights;
+    let m = &run.pattern.metrics;
+    json!({
+        "input": source,
+        "theta_degrees": args.theta,
+        "weights": { "fair": w.fair, "close": w.close, "angle": w.angle, "edge": w.edge },
+        "iterations": r.iterations,
+        "converged": r.converged,
+        "energies": { "angle": number(r.energies.angle), "fair": number(r.energies.fair), "close": number(r.energies.close), "edge": number(r.energies.edge) },
+        "vertex_angle_error_rms_degrees": number(r.angle_error_rms_degrees),
+        "vertex_angle_error_max_degrees": number(r.angle_error_max_degrees),
+        "deviation": {
+            "tolerance_m": number(r.tolerance),
+            "max_m": number(r.max_deviation),
+            "rms_m": number(r.rms_deviation),
+            "guard": number(r.guard),
+        },
+        "max_edge_length_change": number(r.max_edge_change),
+        "strips": {
+            "count": run.pattern.strips.len(),
+            "width_m": number(run.width),
+            "max_strip_plane_angle_error_degrees": number(m.max_quad_angle_error_degrees),
+            "acceptable": run.pattern.verdict.is_acceptable(),
+            "verdict": run.pattern.verdict.message(),
+        },
+        "timings_seconds": { "surface": seconds[0], "total": seconds[1] },
+    })
+}
