@@ -79,6 +79,13 @@ fn strips_unroll_and_metrics_chain_through_their_files() {
     assert!(strips.len() >= 3, "3 levels across the hall give at least 3 strips");
     let strips_obj = text(&dir.path("s/strips.obj"));
     assert_eq!(strips_obj.lines().filter(|l| l.starts_with("g strip_")).count(), strips.len());
+    // diagnostics.csv: the Sec. 5.1 quantities at every vertex of every strip's central polyline.
+    let diagnostics = text(&dir.path("s/diagnostics.csv"));
+    let rows: Vec<&str> = diagnostics.lines().filter(|l| !l.starts_with('#')).skip(1).collect();
+    let vertices: u64 = strips.iter().map(|s| s["vertices"].as_u64().expect("vertices")).sum();
+    assert_eq!(rows.len() as u64, vertices);
+    assert!(rows.iter().all(|r| r.split(',').count() == 13 && !r.contains("NaN") && !r.contains("inf")), "{diagnostics}");
+    assert!(rows.iter().filter(|r| !r.split(',').nth(7).unwrap_or("").is_empty()).count() > rows.len() / 2, "k mostly undefined");
     // curves.obj holds one `l` polyline per level curve.
     assert_eq!(text(&dir.path("s/curves.obj")).lines().filter(|l| l.starts_with("l ")).count(), report["strips"]["curves"].as_u64().expect("curves") as usize);
 

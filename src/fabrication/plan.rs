@@ -91,6 +91,7 @@ pub fn family_name(theta_degrees: Option<f64>) -> Option<&'static str> {
         Family::Asymptotic => "asymptotic",
         Family::Geodesic => "geodesic",
         Family::PseudoGeodesic { .. } => "pseudo-geodesic",
+        Family::ConstantSlope { .. } => "constant-slope",
     })
 }
 

@@ -157,6 +157,7 @@ impl FieldSolver {
         let mut iterated_weights = None;
         while ran < max_iterations && !self.converged {
             flips += self.reorient_side_vectors();
+            self.fit_free_slope();
             iterated_weights = Some(self.problem.weights());
             let damping_before = self.lm.damping();
             let outcome = self.lm.iterate(&self.problem, &mut self.x).map_err(|error| self.located(error))?;
@@ -190,6 +191,35 @@ impl FieldSolver {
         Ok(self.last_report.clone())
     }
 
+    /// The slope β in degrees a constant-slope family aims at (for a free slope, the one fitted
+    /// to the field before the last iteration); `None` for the other families.
+    pub fn slope_degrees(&self) -> Option<f64> {
+        self.problem.slope_axis().map(|_| self.problem.target(0).degrees)
+    }
+
+    /// A free slope (Eq. 22 with γ unknown) is set, before every iteration, to the one that
+    /// minimises `E_slope` for the current field: `sin β` the area-weighted mean of `t·d` over the
+    /// curve vertices that reach the present slope. Block-coordinate descent on the same energy
+    /// the iteration then lowers with β held.
+    fn fit_free_slope(&mut self) {
+        let Family::ConstantSlope { free_slope: true, .. } = self.problem.family() else { return };
+        let Some(axis) = self.problem.slope_axis() else { return };
+        let frames = self.take_frames();
+        let areas = self.problem.mesh().normalized_vertex_areas();
+        let (mut sum, mut weight) = (0.0, 0.0);
+        for (k, frame) in frames.iter().enumerate() {
+            if let (Some(frame), true) = (frame, self.problem.slope_reachable(k)) {
+                let area = areas[self.problem.curve_vertices()[k] as usize];
+                sum += area * frame.tangent.dot(&axis);
+                weight += area;
+            }
+        }
+        self.frames = Some(frames);
+        if weight > 0.0 {
+            self.problem.set_slope((sum / weight).clamp(-1.0, 1.0).asin().to_degrees());
+        }
+    }
+
     /// The report of the last `step` (or of the initial state).
     pub fn report(&self) -> &StepReport {
         &self.last_report
@@ -206,7 +236,7 @@ impl FieldSolver {
     pub fn binormals(&self) -> Vec<Vec3> {
         self.per_curve_vertex(|solver, k, frame| match solver.problem.family() {
             Family::PseudoGeodesic { .. } => solver.auxiliary(k, 0).try_normalize(0.0),
-            Family::Geodesic | Family::Asymptotic => frame.binormal,
+            Family::Geodesic | Family::Asymptotic | Family::ConstantSlope { .. } => frame.binormal,
         })
     }
 
@@ -214,7 +244,7 @@ impl FieldSolver {
     pub fn side_vectors(&self) -> Vec<Vec3> {
         self.per_curve_vertex(|solver, k, frame| match solver.problem.family() {
             Family::PseudoGeodesic { .. } => solver.auxiliary(k, 3).try_normalize(0.0),
-            Family::Geodesic | Family::Asymptotic => Some(frame.side),
+            Family::Geodesic | Family::Asymptotic | Family::ConstantSlope { .. } => Some(frame.side),
         })
     }
 
@@ -382,9 +412,13 @@ fn validate_weights(w: &Weights) -> Result<(), FieldError> {
 }
 
 pub(crate) fn validate_params(params: &FieldParams) -> Result<(), FieldError> {
-    let theta = params.family.theta_degrees();
-    if !(theta.is_finite() && (0.0..=180.0).contains(&theta)) {
-        return Err(FieldError::InvalidParameter { name: "theta", message: format!("must lie in [0°, 180°], got {theta}") });
+    if let Family::ConstantSlope { axis, slope_degrees, .. } = params.family {
+        validate_slope(axis, slope_degrees)?;
+    } else {
+        let theta = params.family.theta_degrees();
+        if !(theta.is_finite() && (0.0..=180.0).contains(&theta)) {
+            return Err(FieldError::InvalidParameter { name: "theta", message: format!("must lie in [0°, 180°], got {theta}") });
+        }
     }
     validate_weights(&params.weights)?;
     for stage in &params.schedule {
@@ -402,6 +436,18 @@ pub(crate) fn validate_params(params: &FieldParams) -> Result<(), FieldError> {
         return Err(FieldError::InvalidParameter { name: "relative_tolerance", message: "must be finite and ≥ 0".into() });
     }
     validate_lm(&params.lm)
+}
+
+/// The axis of a constant-slope family is finite and not zero, its slope finite and in (−90°, 90°).
+fn validate_slope(axis: [f64; 3], slope_degrees: f64) -> Result<(), FieldError> {
+    let length = Vec3::from(axis).norm();
+    if !(axis.iter().all(|a| a.is_finite()) && length > 0.0 && length.is_finite()) {
+        return Err(FieldError::InvalidParameter { name: "axis", message: format!("must be finite and not zero, got {axis:?}") });
+    }
+    if !(slope_degrees.is_finite() && slope_degrees.abs() < 90.0) {
+        return Err(FieldError::InvalidParameter { name: "slope", message: format!("must lie in (−90°, 90°), got {slope_degrees}") });
+    }
+    Ok(())
 }
 
 /// Most damped solves one iteration may try ([`LmOptions::max_trials`]): each costs a

@@ -1,10 +1,11 @@
 //! Scalar fields on a mesh whose level sets form a chosen curve family: pseudo-geodesics,
-//! geodesics or asymptotic curves (paper Sec. 3.1–3.2.2), and P-curve families whose angle varies
-//! from level to level (Sec. 3.2, Fig. 16).
+//! geodesics or asymptotic curves (paper Sec. 3.1–3.2.2), curves of constant slope (Sec. 5.2.3,
+//! Eq. 22), and P-curve families whose angle varies from level to level (Sec. 3.2, Fig. 16).
 
 mod angle_profile;
 mod asymptotic;
 pub(crate) mod auxiliaries;
+mod constant_slope;
 mod crossing;
 mod darboux;
 mod error;
@@ -13,6 +14,7 @@ mod field_solver;
 mod geodesic;
 mod gradient_norm;
 pub mod hessian_energy;
+mod isophote;
 mod level_angles;
 mod level_jet;
 mod params;
@@ -23,9 +25,11 @@ mod session;
 mod varying_angle;
 
 pub use angle_profile::AngleProfile;
+pub use constant_slope::{reachable as slope_reachable, slope_degrees, tangent_plane_inclination_degrees, ISOPHOTE_MARGIN_DEGREES};
 pub use crossing::{find_level_crossing, EdgeCrossing, LevelCrossing};
 pub use darboux::{level_frame, LevelFrame};
 pub use error::FieldError;
+pub use isophote::reachable_boundary;
 pub use field_solver::{FieldSolver, FIELD_VALUE_LIMIT, MAX_LM_TRIALS};
 pub(crate) use field_solver::{stage_weights, validate_field, validate_lm, validate_params};
 pub(crate) use gradient_norm::mean_gradient_norm;

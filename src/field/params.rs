@@ -14,6 +14,14 @@ pub enum Family {
     Geodesic,
     /// Asymptotic curves, θ = 0° (`E_asy`, Eq. 13).
     Asymptotic,
+    /// Curves of constant slope with respect to `axis` (Sec. 5.2.2–5.2.3, Eq. 22): the level
+    /// curves' unit tangents `t` (along `∇F × n`) satisfy `t·d = cos γ = sin β`, `d` the unit
+    /// axis and `β = slope_degrees` in (−90°, 90°) the inclination against the planes orthogonal
+    /// to `d` (0°: the sections orthogonal to `d`). With `free_slope` the family's β is an
+    /// unknown too, started at `slope_degrees` (the least-squares slope of the current field
+    /// before every iteration). Regions whose tangent planes are too close to orthogonal to `d`
+    /// carry no slope term ([`crate::field::slope_reachable`]).
+    ConstantSlope { axis: [f64; 3], slope_degrees: f64, free_slope: bool },
 }
 
 impl Family {
@@ -38,12 +46,22 @@ impl Family {
         }
     }
 
-    /// Target angle between binormal and normal in degrees.
+    /// Target angle between binormal and normal in degrees; for a constant-slope family, which
+    /// has no θ, its (start) slope β: the angle its curve term aims at.
     pub fn theta_degrees(&self) -> f64 {
         match *self {
             Family::PseudoGeodesic { theta_degrees } => theta_degrees,
             Family::Geodesic => 90.0,
             Family::Asymptotic => 0.0,
+            Family::ConstantSlope { slope_degrees, .. } => slope_degrees,
+        }
+    }
+
+    /// The unit axis `d` of a constant-slope family (`None` for the others or a zero axis).
+    pub fn slope_axis(&self) -> Option<crate::mesh::Vec3> {
+        match *self {
+            Family::ConstantSlope { axis, .. } => crate::mesh::Vec3::from(axis).try_normalize(0.0),
+            _ => None,
         }
     }
 
@@ -53,7 +71,7 @@ impl Family {
     pub fn angle_error_degrees(&self, measured: f64, theta: f64) -> f64 {
         let error = (measured - theta).abs();
         match self {
-            Family::PseudoGeodesic { .. } => error,
+            Family::PseudoGeodesic { .. } | Family::ConstantSlope { .. } => error,
             Family::Geodesic | Family::Asymptotic => error.min((180.0 - measured - theta).abs()),
         }
     }

@@ -22,10 +22,10 @@
 use super::hessian_energy::HessianEnergy;
 use super::params::{Family, Weights};
 use super::pseudo_geodesic::TargetAngle;
-use super::{asymptotic, geodesic, gradient_norm, pseudo_geodesic};
+use super::{asymptotic, constant_slope, geodesic, gradient_norm, pseudo_geodesic};
 use super::level_jet::JetStencils;
 use super::level_jet::LevelJet;
-use crate::mesh::TriMesh;
+use crate::mesh::{TriMesh, Vec3};
 use crate::solver::{LeastSquaresProblem, VariableLayout};
 
 /// Which energy a block belongs to.
@@ -59,6 +59,8 @@ pub struct FieldProblem {
     jets: JetStencils,
     /// The mesh's bounding-box diagonal: curves of larger radius count as straight.
     model_size: f64,
+    /// A constant-slope family's unit axis and the curve vertices that can reach its slope.
+    slope: Option<SlopeTerm>,
     /// Curve block variables (stencil field values, then auxiliaries), CSR by curve-vertex index.
     curve_offsets: Vec<usize>,
     curve_variables: Vec<u32>,
@@ -95,7 +97,7 @@ impl FieldProblem {
             curve_variables.extend((first_aux..first_aux + auxiliaries).map(|i| i as u32));
             curve_offsets.push(curve_variables.len());
         }
-        FieldProblem {
+        let mut problem = FieldProblem {
             fairness,
             target: TargetAngle::from_degrees(family.theta_degrees()),
             vertex_targets: None,
@@ -105,17 +107,43 @@ impl FieldProblem {
             curve_vertices,
             jets,
             model_size: super::darboux::model_size(&mesh),
+            slope: family.slope_axis().map(|axis| SlopeTerm { axis, reachable: Vec::new() }),
             curve_offsets,
             curve_variables,
             auxiliary_base,
             mesh,
-        }
+        };
+        problem.update_reachable();
+        problem
+    }
+
+    /// The unit axis of a constant-slope family.
+    pub(crate) fn slope_axis(&self) -> Option<Vec3> {
+        self.slope.as_ref().map(|s| s.axis)
+    }
+
+    /// Whether the `k`-th curve vertex carries a slope row (always for other families).
+    pub(crate) fn slope_reachable(&self, k: usize) -> bool {
+        self.slope.as_ref().is_none_or(|s| s.reachable[k])
+    }
+
+    /// Sets the slope β (degrees) of a constant-slope family (its free slope, fitted between
+    /// iterations) and the vertices that can reach it.
+    pub(crate) fn set_slope(&mut self, degrees: f64) {
+        self.target = TargetAngle::from_degrees(degrees);
+        self.update_reachable();
+    }
+
+    fn update_reachable(&mut self) {
+        let Some(slope) = self.slope.as_mut() else { return };
+        let normals = self.mesh.smooth_normals();
+        slope.reachable = self.curve_vertices.iter().map(|&v| constant_slope::reachable(&normals[v as usize], &slope.axis, self.target.degrees)).collect();
     }
 
     pub(crate) fn auxiliaries_per_vertex(family: Family) -> usize {
         match family {
             Family::PseudoGeodesic { .. } => pseudo_geodesic::AUXILIARIES,
-            Family::Geodesic | Family::Asymptotic => 0,
+            Family::Geodesic | Family::Asymptotic | Family::ConstantSlope { .. } => 0,
         }
     }
 
@@ -124,6 +152,7 @@ impl FieldProblem {
             Family::PseudoGeodesic { .. } => pseudo_geodesic::ROWS,
             Family::Geodesic => geodesic::ROWS,
             Family::Asymptotic => asymptotic::ROWS,
+            Family::ConstantSlope { .. } => constant_slope::ROWS,
         }
     }
 
@@ -255,6 +284,12 @@ impl FieldProblem {
                     }
                     Family::Geodesic => geodesic::evaluate(&jet, &stencil, scale, residuals, jacobian),
                     Family::Asymptotic => asymptotic::evaluate(&jet, &stencil, scale, residuals, jacobian),
+                    Family::ConstantSlope { .. } => {
+                        // Beyond the isophote (and its margin) no tangent has the slope: no row.
+                        if let Some(slope) = self.slope.as_ref().filter(|s| s.reachable[k]) {
+                            constant_slope::evaluate(&jet, &stencil, &slope.axis, self.target.sin, scale, residuals, jacobian);
+                        }
+                    }
                 }
             }
         }
@@ -302,6 +337,13 @@ impl LeastSquaresProblem for FieldProblem {
         // Invariant: the groups tile [n, variable_count) exactly, so the layout is valid.
         VariableLayout::with_local_groups(n, &sizes).expect("auxiliary groups tile the local variables")
     }
+}
+
+/// The curve term of a constant-slope family (Eq. 22).
+struct SlopeTerm {
+    axis: Vec3,
+    /// Per curve vertex: its tangent plane holds tangents of the slope ([`constant_slope::reachable`]).
+    reachable: Vec<bool>,
 }
 
 /// Weight of `E_fit` relative to the Hessian energy inside `E_fair` (so λ_fit = 1 at the default

@@ -35,7 +35,8 @@ pub struct StepReport {
     pub stage: usize,
     pub energies: Energies,
     /// RMS and maximum of `|θ_measured − θ_v|` in degrees (`θ_v` the vertex's target) over regular curve vertices
-    /// with a defined binormal, measured from the field's own level polylines.
+    /// with a defined binormal, measured from the field's own level polylines; for a
+    /// constant-slope family, of the tangents' slope against β at the vertices that reach β.
     pub angle_error_rms_degrees: f64,
     pub angle_error_max_degrees: f64,
     /// Interior vertices where the angle was measured.
@@ -61,7 +62,12 @@ impl StepReport {
             match frame {
                 None => report.singular_vertices.push(v),
                 Some(frame) => {
-                    if let Some(measured) = frame.signed_angle_degrees() {
+                    let measured = match problem.slope_axis() {
+                        // Constant slope: the tangent's slope, where the slope is reachable.
+                        Some(axis) => problem.slope_reachable(k).then(|| super::slope_degrees(&frame.tangent, &axis)),
+                        None => frame.signed_angle_degrees(),
+                    };
+                    if let Some(measured) = measured {
                         let error = problem.family().angle_error_degrees(measured, problem.target(k).degrees);
                         sum_squares += error * error;
                         report.angle_error_max_degrees = report.angle_error_max_degrees.max(error);

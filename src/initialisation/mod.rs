@@ -1,8 +1,8 @@
 //! Initial fields (paper Sec. 3.2.2, Fig. 12 b–c and Fig. 14): from ordered guide curves
 //! (Eq. 5–7) and from sketched strokes, plus the automatic interactive design that estimates the
 //! target angle from the strokes and hands over to the pseudo-geodesic optimisation of
-//! [`crate::field`], and the default start search that tries several starts when none is given
-//! ([`StartSearch`]).
+//! [`crate::field`], the default start search that tries several starts when none is given
+//! ([`StartSearch`]), and the start of a constant-slope family from its slope directions.
 //!
 //! Both initialisations map the mesh to the plane with a least-squares conformal map, start from
 //! a linear function there, and solve linear least-squares problems with a sparse Cholesky
@@ -15,6 +15,7 @@ mod error;
 mod guide_curves;
 mod linear_least_squares;
 mod proxy;
+mod slope_start;
 mod smoothness_rows;
 mod start_search;
 mod stroke_field;
@@ -25,6 +26,7 @@ mod target_angle;
 pub use auto_design::{auto_design, AutoDesign, AutoDesignOptions, DesignStatus};
 pub use error::InitialisationError;
 pub use guide_curves::{field_from_guide_curves, GuideCurveOptions, GuideField};
+pub use slope_start::{slope_start_field, slope_tangent};
 pub use start_search::{search_start, Candidate, SearchError, SearchOptions, SearchOutcome, StartKind, StartSearch};
 pub use stroke_field::{field_from_strokes, StrokeField, StrokeOptions};
 pub use strokes::{project_strokes, StrokeSample};

@@ -46,6 +46,9 @@ impl NetParams {
         }
         for family in &self.families {
             crate::field::validate_params(&FieldParams { family: *family, ..self.field.clone() })?;
+            if let crate::field::Family::ConstantSlope { free_slope: true, .. } = family {
+                return invalid("families", "a net holds constant-slope families with a fixed slope only".into());
+            }
         }
         if let Some(gamma) = self.intersection_degrees {
             if !(gamma.is_finite() && gamma > 0.0 && gamma < 180.0) {

@@ -1,7 +1,9 @@
 //! Judging results as an outside reviewer would (the optimiser's own energies are no proof):
 //! curve families measured along the curves at the scale of a few edges against the smooth
-//! surface normal ([`family_angles`]).
+//! surface normal ([`family_angles`]), and curves of constant slope ([`slope_angles`]).
 
 mod family;
+mod slope;
 
 pub use family::{family_angles, CurveAngles, FamilyAngles, WorstPoint, DEFAULT_SPACING_EDGES};
+pub use slope::{slope_angles, SlopeAngles};

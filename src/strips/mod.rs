@@ -2,9 +2,10 @@
 //! binormal-strip optimisation of each polyline (Eq. 8–10 on polyline vertices), discrete
 //! rectifying developables (version 1, Fig. 19, and the preferred strip of planar quads, Fig. 20,
 //! Eq. 16–17, solved with the crate's Levenberg–Marquardt), flat unrollings, the quality measures
-//! of Table 4 and the verdict on a pattern.
+//! of Table 4, the verdict on a pattern and the node diagnostics of Sec. 5.1 (Prop. 1–2).
 
 mod builder;
+mod diagnostics;
 mod error;
 mod frenet;
 mod metrics;
@@ -16,6 +17,7 @@ mod unrolling;
 mod verdict;
 
 pub use builder::rectifying_strips;
+pub use diagnostics::{strip_diagnostics, VertexDiagnostics, SINGULAR_POINT_CLEARANCE_WIDTHS};
 pub use error::{StripError, StripWarning};
 pub use frenet::{discrete_binormals, initial_rulings, principal_normals, unit_edges, version_one_rulings};
 pub use metrics::{PatternMetrics, StripGeometry, StripMetrics, StripShape};

@@ -1,12 +1,13 @@
 //! Procedural test surfaces: deterministic, irregularly triangulated disk-topology patches of known
 //! analytic surfaces, used to validate the discrete operators (e.g. the fairness energy of Eq. 6)
-//! against closed-form expectations, and the architectural hall roof used by the demo and the
-//! benchmarks.
+//! against closed-form expectations, the architectural hall roof used by the demo and the
+//! benchmarks, and Brauner's surfaces with asymptotic curves of constant slope (Eq. 23).
 //!
 //! Every generator returns consistently oriented triangles without degenerate faces; the
 //! orientation of each generator (outward / upward normals) is documented on it. Randomness comes
 //! only from the seedable [`SplitMix64`], so the same parameters give the same bits.
 
+mod brauner;
 mod cylinder_patch;
 mod hall_roof;
 mod hyperbolic_paraboloid;
@@ -16,6 +17,7 @@ mod random;
 mod sphere_cap;
 mod vault;
 
+pub use brauner::{brauner_normal, brauner_point, brauner_slope_degrees, brauner_surface, brauner_tangents, BraunerSurface, HeatJet, HeatSolution, PaperHeatSolution};
 pub use cylinder_patch::{cylinder_patch, CylinderPatch};
 pub use hall_roof::{hall_roof, HallRoofSection};
 pub use hyperbolic_paraboloid::{hyperbolic_paraboloid, HyperbolicParaboloid};

@@ -32,7 +32,7 @@ pub enum Command {
     /// session (--resume). Writes field.csv, session.bin, energies.csv, convergence.svg, report.json.
     Field(FieldArgs),
     /// Level curves of a field and the rectifying strips along them. Writes curves.obj,
-    /// strips.obj, rulings.obj, preview.svg, report.json.
+    /// strips.obj, rulings.obj, diagnostics.csv (Sec. 5.1 per strip vertex), preview.svg, report.json.
     Strips(StripsArgs),
     /// Lay the strips of a strips.obj flat into a cut sheet (unrolled.svg, millimetres).
     Unroll(UnrollArgs),
@@ -101,7 +101,8 @@ pub struct FamilyFlags {
     #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
     pub theta: Option<f64>,
     /// The curve family by name: asymptotic (θ = 0), geodesic (θ = 90) or pseudo-geodesic (θ from
-    /// --theta, neither 0, 90 nor 180) [default: named by θ].
+    /// --theta, neither 0, 90 nor 180); `lamella field` also takes slope (curves of constant slope
+    /// about --axis, see --slope) [default: named by θ].
     #[arg(long, value_name = "asymptotic|geodesic|pseudo-geodesic")]
     pub family: Option<String>,
 }
@@ -252,11 +253,29 @@ pub struct FieldArgs {
     #[arg(long, value_name = "session.bin", conflicts_with_all = ["mesh", "theta", "family", "guides", "guides_file", "strokes", "direction", "start_field"])]
     pub resume: Option<PathBuf>,
     #[command(flatten)]
+    pub slope: SlopeFlags,
+    #[command(flatten)]
     pub out: OutArgs,
     #[command(flatten)]
     pub config: ConfigArgs,
     #[command(flatten)]
     pub verbosity: VerbosityArgs,
+}
+
+/// A constant-slope family (paper Sec. 5.2.3, Eq. 22), chosen with `--family slope`.
+#[derive(Args, Debug, Clone, Default)]
+pub struct SlopeFlags {
+    /// With --family slope: the axis d (three numbers, any length but not zero) [default: 0,0,1].
+    #[arg(long, value_name = "X,Y,Z", allow_negative_numbers = true)]
+    pub axis: Option<String>,
+    /// With --family slope: the slope β in degrees, −90 to 90 exclusive, of the level curves'
+    /// tangents against the planes orthogonal to the axis (t·d = sin β = cos γ); −β gives the
+    /// other family of slope |β| [default: 30].
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
+    pub slope: Option<f64>,
+    /// With --family slope: let the family's slope vary (started at --slope) [default: fixed].
+    #[arg(long)]
+    pub free_slope: bool,
 }
 
 #[derive(Args, Debug, Clone, Default)]

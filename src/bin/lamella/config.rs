@@ -199,7 +199,7 @@ pub fn resolve_family(theta: Option<f64>, name: Option<&str>) -> CliResult<Optio
             other => Ok(other),
         },
         Some(other) => Err(CliError::bad_input(format!(
-            "parameter --family = {} is not asymptotic, geodesic or pseudo-geodesic",
+            "parameter --family = {} is not asymptotic, geodesic or pseudo-geodesic (slope: only in `lamella field`)",
             clip(other)
         ))),
     }
@@ -213,7 +213,7 @@ fn resolve_start(flags: Option<&StartFlags>, file: &ConfigFile) -> CliResult<Sta
         from_flags.extend(f.guides_file.clone().map(Start::GuidesFile));
         from_flags.extend(f.strokes.clone().map(Start::Strokes));
         if let Some(text) = &f.direction {
-            from_flags.push(Start::Direction(parse_direction(text)?));
+            from_flags.push(Start::Direction(parse_vector("--direction", text)?));
         }
         from_flags.extend(f.start_field.clone().map(Start::FieldFile));
     }
@@ -235,14 +235,13 @@ fn resolve_start(flags: Option<&StartFlags>, file: &ConfigFile) -> CliResult<Sta
     }
 }
 
-/// `X,Y,Z` as a vector.
-fn parse_direction(text: &str) -> CliResult<Vec3> {
-    let values: Vec<f64> = text.split(',').map(|v| v.trim().parse::<f64>()).collect::<Result<_, _>>().map_err(|_| {
-        CliError::bad_input(format!("parameter --direction = {} is not three numbers X,Y,Z", clip(text)))
-    })?;
+/// `X,Y,Z` as a vector; errors name the parameter `flag`.
+pub fn parse_vector(flag: &str, text: &str) -> CliResult<Vec3> {
+    let bad = || CliError::bad_input(format!("parameter {flag} = {} is not three numbers X,Y,Z", clip(text)));
+    let values: Vec<f64> = text.split(',').map(|v| v.trim().parse::<f64>()).collect::<Result<_, _>>().map_err(|_| bad())?;
     match values.as_slice() {
         [x, y, z] => Ok(Vec3::new(*x, *y, *z)),
-        _ => Err(CliError::bad_input(format!("parameter --direction = {} is not three numbers X,Y,Z", clip(text)))),
+        _ => Err(bad()),
     }
 }
 

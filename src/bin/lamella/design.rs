@@ -96,7 +96,7 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     summary(
         verbosity,
         &format!(
-            "{}\n{}\n{workshop}done in {:.1} s (field {field_seconds:.1} s, strips {strips_seconds:.1} s); wrote {target}/ (surface.obj, field.csv, session.bin, energies.csv, curves.obj, strips.obj, rulings.obj, report.json, unrolled.svg, convergence.svg, preview.svg, view.html{workshop_files})",
+            "{}\n{}\n{workshop}done in {:.1} s (field {field_seconds:.1} s, strips {strips_seconds:.1} s); wrote {target}/ (surface.obj, field.csv, session.bin, energies.csv, curves.obj, strips.obj, rulings.obj, diagnostics.csv, report.json, unrolled.svg, convergence.svg, preview.svg, view.html{workshop_files})",
             field_summary(&solver, &measure),
             strips_summary(&run),
             started.elapsed().as_secs_f64()

@@ -11,7 +11,7 @@ use crate::report_json::{self, Timings};
 use crate::start_field::start_solver;
 use crate::svg::convergence::convergence_svg;
 use lamella::curves::{extract_level_curves, uniform_levels, LevelCurve};
-use lamella::field::{FieldError, FieldSolver};
+use lamella::field::{Family, FieldError, FieldSolver};
 use lamella::mesh::TriMesh;
 use lamella::quality::{family_angles, FamilyAngles, DEFAULT_SPACING_EDGES};
 use std::time::Instant;
@@ -95,6 +95,9 @@ pub fn write_field_files(out: &OutputDir, solver: &FieldSolver, history: &[Histo
 }
 
 pub fn run(args: &FieldArgs) -> CliResult<()> {
+    if crate::slope_field::requested(args) {
+        return crate::slope_field::run(args);
+    }
     let started = Instant::now();
     let verbosity = Verbosity::from(args.verbosity);
     let settings = Settings::resolve(Flags {
@@ -127,6 +130,10 @@ pub fn run(args: &FieldArgs) -> CliResult<()> {
             (started.solver, history, mesh_name(settings.mesh.as_deref()), mesh)
         }
     };
+    if let Family::ConstantSlope { .. } = solver.params().family {
+        optimise(&mut solver, settings.max_iterations, &mut history, verbosity)?;
+        return crate::slope_field::finish(out, &mesh, &solver, &history, &serde_json::json!({ "mesh": source }), started, verbosity);
+    }
     let theta = solver.params().family.theta_degrees();
     note(verbosity, &format!("field on {source}: θ = {theta}°, from iteration {}", solver.iterations()));
     let field_started = Instant::now();

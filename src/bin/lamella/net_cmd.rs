@@ -60,6 +60,7 @@ fn family_label(family: &Family) -> String {
         Family::PseudoGeodesic { theta_degrees } => format!("P{theta_degrees}"),
         Family::Geodesic => "G".into(),
         Family::Asymptotic => "A".into(),
+        Family::ConstantSlope { slope_degrees, .. } => format!("S{slope_degrees}"),
     }
 }
 

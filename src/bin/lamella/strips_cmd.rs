@@ -3,6 +3,7 @@
 use crate::args::StripsArgs;
 use crate::config::{Flags, Settings};
 use crate::console::err_line;
+use crate::diagnostics_csv::diagnostics_csv;
 use crate::error::{CliError, CliResult};
 use crate::start_field::read_field_for;
 use crate::mesh_input::{load_mesh, mesh_name};
@@ -104,11 +105,12 @@ pub fn warning_lines(run: &StripRun) -> Vec<String> {
     strips.chain(skipped).collect()
 }
 
-/// Writes curves.obj, strips.obj, rulings.obj and preview.svg.
+/// Writes curves.obj, strips.obj, rulings.obj, diagnostics.csv and preview.svg.
 pub fn write_strip_files(out: &OutputDir, mesh: &TriMesh, run: &StripRun) -> CliResult<()> {
     out.write("curves.obj", curves_obj(&run.curves))?;
     out.write("strips.obj", strips_obj(&run.pattern))?;
     out.write("rulings.obj", rulings_obj(&run.pattern))?;
+    out.write("diagnostics.csv", diagnostics_csv(&run.pattern, run.width))?;
     out.write("preview.svg", preview_svg(mesh, &run.pattern))
 }
 
@@ -139,6 +141,6 @@ pub fn run(args: &StripsArgs) -> CliResult<()> {
     out.write("report.json", report_json::document(&parameters, None, Some(&run), &timings))?;
     let target = out.target().display().to_string();
     out.commit()?;
-    summary(verbosity, &format!("{}\nwrote {target}/ (curves.obj, strips.obj, rulings.obj, preview.svg, report.json)", strips_summary(&run)))?;
+    summary(verbosity, &format!("{}\nwrote {target}/ (curves.obj, strips.obj, rulings.obj, diagnostics.csv, preview.svg, report.json)", strips_summary(&run)))?;
     crate::design::verdict(&run)
 }
