@@ -2,6 +2,7 @@
 //! each block's Jᵀr and Gram products of its global columns), and at trial points without them.
 use rayon::prelude::*;
 
+use super::packed_upper::add_outer_product;
 use super::segments::try_for_each_segment;
 use super::structure::BlockStructure;
 use super::{LeastSquaresProblem, SolverError};
@@ -36,24 +37,19 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
             return true;
         }
         // Jᵀr and the upper Gram of the global columns (in the order of the pattern's gram
-        // targets), accumulated row by row; structurally zero entries are skipped.
+        // targets), accumulated row by row; structurally zero entries are skipped. Only blocks
+        // without a local group have a Gram part, and all their variables are global, so its
+        // columns are the row's own entries in order.
         s.gradient.fill(0.0);
         s.gram.fill(0.0);
-        let positions = if s.gram.is_empty() { &[] } else { structure.global_positions(b) };
+        let with_gram = !s.gram.is_empty();
+        debug_assert!(!with_gram || structure.global_positions(b).iter().enumerate().all(|(i, &p)| p as usize == i));
         for (row, &rv) in s.jacobian.chunks_exact(n).zip(s.residuals.iter()) {
             for (ga, &j) in s.gradient.iter_mut().zip(row) {
                 *ga += j * rv;
             }
-            let mut t = 0;
-            for (i, &pi) in positions.iter().enumerate() {
-                let rest = &positions[i..];
-                let vi = row[pi as usize];
-                if vi != 0.0 {
-                    for (g, &pj) in s.gram[t..t + rest.len()].iter_mut().zip(rest) {
-                        *g += vi * row[pj as usize];
-                    }
-                }
-                t += rest.len();
+            if with_gram {
+                add_outer_product(row, s.gram);
             }
         }
         true

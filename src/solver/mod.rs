@@ -13,6 +13,7 @@ mod levenberg_marquardt;
 mod normal_pattern;
 mod options;
 mod outcome;
+mod packed_upper;
 mod problem;
 mod schur;
 mod segments;

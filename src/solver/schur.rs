@@ -19,6 +19,7 @@
 //! The global Gram G_L = J_GᵀJ_G of the group's blocks is summed here too (from the same
 //! Jacobian rows) rather than scattered into H_GG block by block: the group hands S the single
 //! packed term W − G_L on its Schur targets, which cover every global pair of its blocks.
+use super::packed_upper::add_outer_product;
 use super::segments::try_for_each_segment;
 use super::structure::{triangle_len, BlockStructure, GroupStructure};
 
@@ -245,15 +246,7 @@ fn accumulate_kernel(k: usize, q: usize, s: &mut Sections<'_>, blocks: &BlockStr
                 }
             }
             if any_global {
-                let mut t = 0;
-                for (i, &vi) in s.row_globals.iter().enumerate() {
-                    if vi != 0.0 {
-                        for (g, &vj) in s.gram[t..t + q - i].iter_mut().zip(&s.row_globals[i..]) {
-                            *g += vi * vj;
-                        }
-                    }
-                    t += q - i;
-                }
+                add_outer_product(s.row_globals, s.gram);
             }
         }
     }
