@@ -221,6 +221,10 @@ typedef struct LmlReshape LmlReshape;
 // `lml_search_field`, release it with `lml_search_free`.
 typedef struct LmlSearch LmlSearch;
 
+// The quad net and nodes of two strip families (opaque). Create it with `lml_strip_net_new`,
+// release it with `lml_strip_net_free`.
+typedef struct LmlStripNet LmlStripNet;
+
 // A strip pattern (opaque): one rectifying strip per level curve that could carry one, with
 // its flat unrolling and metrics, and the curves that were skipped. Create it with
 // `lml_strips_new`, release it with `lml_strips_free`. Immutable once created.
@@ -609,6 +613,24 @@ typedef struct LmlNetReport {
   // The weighted energy being minimised.
   double energy_total;
 } LmlNetReport;
+
+// One node of a gridshell: where a strip of the first family crosses one of the second.
+typedef struct LmlNode {
+  // Index of the crossing among the net's vertices (`lml_strip_net_vertices`).
+  uint64_t vertex;
+  // Index of the strip of each family (as in `lml_strips_metrics` of that family's strips).
+  uint64_t strips[2];
+  // Arc length of the node along each strip's centre line, from its first point: where the
+  // hole or slot goes on the flat strip.
+  double arc_lengths[2];
+  // The crossing on the surface.
+  double position[3];
+  // Unit node axis: the mean of the two strips' unit rulings at the node.
+  double axis[3];
+  // Angle between the two rulings as lines, in degrees, [0°, 90°]: 0 for a torsion-free node
+  // (Sec. 5.2).
+  double ruling_angle_degrees;
+} LmlNode;
 
 // The state of a surface optimisation after `lml_reshape_step` (written by the library; the
 // caller owns the struct). Lengths in the mesh's units, angles in degrees; energies unweighted
@@ -1028,6 +1050,17 @@ LmlStatus lml_curves_new_uniform(const struct LmlField *field,
                                  size_t count,
                                  double spacing,
                                  struct LmlCurves **out);
+
+// Like `lml_curves_new_uniform` on field `k` (0 or 1) of a net session: the base curves of that
+// family's strips (build them with `lml_strips_new` at the family's θ, then the net's nodes with
+// `lml_strip_net_new`).
+//
+// Returns as `lml_curves_new_uniform`, and `LML_STATUS_INVALID_ARGUMENT` for `k` > 1.
+LmlStatus lml_curves_new_from_net(const struct LmlNet *net,
+                                  uint32_t k,
+                                  size_t count,
+                                  double spacing,
+                                  struct LmlCurves **out);
 
 // Releases curves. NULL is accepted and ignored. Strips built from them keep working. The handle
 // must not be used (or freed) again.
@@ -1625,6 +1658,61 @@ LmlStatus lml_net_field(const struct LmlNet *net,
                         double *values,
                         size_t capacity,
                         size_t *needed);
+
+// Builds the quad net of a net session's two fields at the levels of their strips, and the
+// strips' nodes.
+//
+// - `net`: the session (converged or not); its current fields are used. Not retained.
+// - `strips_f`, `strips_g`: the strips built on level curves of field 0 and of field 1
+//   (`lml_curves_new_from_net`, then `lml_strips_new`); the net's levels are the levels of
+//   these strips. Not retained.
+// - `out`: receives the new net (release with `lml_strip_net_free`); NULL on failure.
+//
+// A crossing becomes a node when each family has a strip on its level passing within two mean
+// edge lengths of it; crossings where a strip was skipped are net vertices without a node.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer);
+// `LML_STATUS_SINGULAR_FIELD` (a field has become constant).
+LmlStatus lml_strip_net_new(const struct LmlNet *net,
+                            const struct LmlStrips *strips_f,
+                            const struct LmlStrips *strips_g,
+                            struct LmlStripNet **out);
+
+// Releases a net. NULL is accepted and ignored. The handle must not be used again.
+void lml_strip_net_free(struct LmlStripNet *net);
+
+// Copies the net's vertices (the crossings of level `i` of `f` with level `j` of `g`, ordered
+// by `i` then `j`) as `3 * count` doubles (x, y, z) into `xyz`, with the two-call pattern of
+// `lml_net_field`. Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or
+// `LML_STATUS_INVALID_ARGUMENT` (NULL net or `needed`).
+LmlStatus lml_strip_net_vertices(const struct LmlStripNet *net,
+                                 double *xyz,
+                                 size_t capacity,
+                                 size_t *needed);
+
+// Copies the level indices of the net's vertices as `2 * count` values (`i`, `j`: vertex `k` is
+// the crossing of the `i`-th level of `f` with the `j`-th of `g`, levels counted in increasing
+// order) into `ij`, with the two-call pattern. Rows of the net are the vertices of equal `i`,
+// columns those of equal `j`. Returns as `lml_strip_net_vertices`.
+LmlStatus lml_strip_net_levels(const struct LmlStripNet *net,
+                               uint32_t *ij,
+                               size_t capacity,
+                               size_t *needed);
+
+// Copies the net's quads as `4 * count` vertex indices (`(i, j)`, `(i, j + 1)`, `(i + 1, j + 1)`,
+// `(i + 1, j)`: a quad wherever all four crossings exist) into `quads`, with the two-call
+// pattern. Returns as `lml_strip_net_vertices`.
+LmlStatus lml_strip_net_quads(const struct LmlStripNet *net,
+                              uint32_t *quads,
+                              size_t capacity,
+                              size_t *needed);
+
+// Copies the nodes into `nodes`, with the two-call pattern (`*needed` receives the node count).
+// Returns as `lml_strip_net_vertices`.
+LmlStatus lml_strip_net_nodes(const struct LmlStripNet *net,
+                              struct LmlNode *nodes,
+                              size_t capacity,
+                              size_t *needed);
 
 // Writes the interactive 3D viewer page of `strips` (a view.html as `lamella design` writes):
 // one self-contained HTML file (no network access, no other files) showing the surface, the

@@ -11,9 +11,17 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-echo "== Rust tests"
-cargo test --locked
+# Each step prints how long it took, so that the whole run can be kept within its time budget.
+step() {
+    local started=$SECONDS
+    "$@"
+    echo "== $* took $((SECONDS - started)) s"
+}
 
-scripts/test-c-abi.sh
-scripts/test-viewer.sh
-scripts/test-csharp.sh
+echo "== Rust tests"
+step cargo test --locked
+
+step scripts/test-c-abi.sh
+step scripts/test-viewer.sh
+step scripts/test-csharp.sh
+echo "== all tests passed in $SECONDS s"

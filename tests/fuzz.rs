@@ -36,7 +36,12 @@ mod mesh_support;
 
 mod fuzz_support;
 
-use fuzz_support::{run_target, Options, Target};
+use fuzz_support::{run_target, Options, RunResult, Target};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// Targets fuzzed at the same time: each has its own seeded generator, corpus and watchdog, so a
+/// target's run does not depend on which worker takes it.
+const WORKERS: usize = 2;
 
 fn main() {
     let options = match Options::from_args(std::env::args().skip(1)) {
@@ -58,16 +63,46 @@ fn main() {
         eprintln!("fuzz: no target named {:?}", options.target);
         std::process::exit(2);
     }
-    let mut executions = 0;
-    let mut findings = 0;
-    for target in chosen {
-        let result = run_target(target, &options);
-        executions += result.executions;
-        findings += result.findings;
-    }
+    fuzz_support::record_panics();
+    let results = run_on_workers(&chosen, &options);
+    let executions: u64 = results.iter().map(|r| r.executions).sum();
+    let findings: usize = results.iter().map(|r| r.findings).sum();
     println!("fuzz: {executions} executions in total, {findings} findings");
     if findings > 0 {
         println!("0 passed, 1 failed");
         std::process::exit(1);
     }
+}
+
+/// Runs the targets on [`WORKERS`] threads, each taking the next target not yet taken; the
+/// results come back in the targets' order.
+fn run_on_workers(targets: &[&Target], options: &Options) -> Vec<RunResult> {
+    let next = AtomicUsize::new(0);
+    let mut results: Vec<(usize, RunResult)> = std::thread::scope(|scope| {
+        let workers: Vec<_> = (0..WORKERS.min(targets.len()))
+            .map(|_| {
+                scope.spawn(|| {
+                    let mut done = Vec::new();
+                    loop {
+                        let index = next.fetch_add(1, Ordering::Relaxed);
+                        let Some(target) = targets.get(index) else { break done };
+                        done.push((index, run_target(target, options)));
+                    }
+                })
+            })
+            .collect();
+        workers
+            .into_iter()
+            .flat_map(|worker| {
+                worker.join().unwrap_or_else(|_| {
+                    // The panic hook keeps messages instead of printing them: say it here.
+                    println!("fuzz: a worker thread panicked outside a target's execution");
+                    println!("0 passed, 1 failed");
+                    std::process::exit(1)
+                })
+            })
+            .collect()
+    });
+    results.sort_by_key(|(index, _)| *index);
+    results.into_iter().map(|(_, result)| result).collect()
 }

@@ -41,6 +41,7 @@ namespace Lamella.Tests
             { "LmlFabricationSummary", typeof(FabricationSummary) },
             { "LmlNetReport", typeof(NetReportRecord) },
             { "LmlReshapeReport", typeof(ReshapeReportRecord) },
+            { "LmlNode", typeof(NodeRecord) },
         };
 
         /// <summary>Integer typedefs of the header and the managed enum each is carried by (also in arrays).</summary>

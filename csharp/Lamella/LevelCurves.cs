@@ -29,6 +29,20 @@ namespace Lamella
             return new LevelCurves(handle);
         }
 
+        /// <summary>
+        /// The level curves of field <paramref name="k"/> (0 or 1) of a net at <paramref name="count"/> values spread uniformly
+        /// over its range, extremes left out: the base curves of that family's strips (<c>lml_curves_new_from_net</c>).
+        /// </summary>
+        public static LevelCurves OfNet(NetSolver net, int k, int count, double spacing)
+        {
+            if (net == null) throw new ArgumentNullException(nameof(net));
+            if (k < 0 || k > 1) throw new ArgumentOutOfRangeException(nameof(k), "a net has fields 0 and 1");
+            if (count < 0) throw new ArgumentOutOfRangeException(nameof(count));
+            CurvesHandle handle = null;
+            Native.Check(net.Locked(h => NativeMethods.lml_curves_new_from_net(h, (uint)k, Native.Size(count), spacing, out handle)));
+            return new LevelCurves(handle);
+        }
+
         /// <summary>The level curves at <paramref name="count"/> values spread uniformly over the field's range, extremes left out.</summary>
         public static LevelCurves Uniform(FieldSolver field, int count, double spacing)
         {

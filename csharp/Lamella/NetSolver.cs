@@ -117,6 +117,15 @@ namespace Lamella
             }
         }
 
+        /// <summary>Runs <paramref name="call"/> on the native handle under the session's lock.</summary>
+        internal T Locked<T>(Func<NetHandle, T> call)
+        {
+            lock (gate)
+            {
+                return call(handle);
+            }
+        }
+
         /// <summary>Releases the native session.</summary>
         public void Dispose() => handle.Dispose();
     }

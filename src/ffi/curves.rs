@@ -4,6 +4,7 @@
 use super::failure::Failure;
 use super::field::LmlField;
 use super::guard::guarded;
+use super::net::LmlNet;
 use super::layout::{flat_xyz, offsets};
 use super::raw::{copy_out, handle, input, release, Out};
 use super::status::LmlStatus;
@@ -29,16 +30,15 @@ pub struct LmlCurves {
 }
 
 /// The level curves of the current field at `levels`, resampled to `spacing` unless it is 0.
-fn extract(field: &LmlField, levels: impl FnOnce(&[f64]) -> Result<Vec<f64>, Failure>, spacing: f64) -> Result<LmlCurves, Failure> {
+fn extract(mesh: &Arc<TriMesh>, values: &[f64], levels: impl FnOnce(&[f64]) -> Result<Vec<f64>, Failure>, spacing: f64) -> Result<LmlCurves, Failure> {
     if !(spacing.is_finite() && spacing >= 0.0) {
         return Err(Failure::argument("spacing", format!("must be finite and ≥ 0 (0: no resampling), got {spacing}")));
     }
-    let values = field.solver.field();
-    let mut curves = extract_level_curves(&field.mesh, &values, &levels(&values)?)?;
+    let mut curves = extract_level_curves(mesh, values, &levels(values)?)?;
     if spacing > 0.0 {
         curves = resample_all(&curves, spacing)?;
     }
-    Ok(LmlCurves { mesh: Arc::clone(&field.mesh), curves })
+    Ok(LmlCurves { mesh: Arc::clone(mesh), curves })
 }
 
 /// Extracts the level curves of the current field at the given values.
@@ -77,7 +77,7 @@ pub unsafe extern "C" fn lml_curves_new(
         out.set(std::ptr::null_mut());
         let field = unsafe { handle(field, "field") }?;
         let levels = unsafe { input(levels, level_count, "levels") }?;
-        out.set_owned(extract(field, |_| Ok(levels.to_vec()), spacing)?);
+        out.set_owned(extract(&field.mesh, &field.solver.field(), |_| Ok(levels.to_vec()), spacing)?);
         Ok(LmlStatus::Ok)
     })
 }
@@ -97,7 +97,25 @@ pub unsafe extern "C" fn lml_curves_new_uniform(field: *const LmlField, count: u
         let mut out = unsafe { Out::new(out, "out") }?;
         out.set(std::ptr::null_mut());
         let field = unsafe { handle(field, "field") }?;
-        out.set_owned(extract(field, |values| Ok(uniform_levels(&field.mesh, values, count)?), spacing)?);
+        out.set_owned(extract(&field.mesh, &field.solver.field(), |values| Ok(uniform_levels(&field.mesh, values, count)?), spacing)?);
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// Like `lml_curves_new_uniform` on field `k` (0 or 1) of a net session: the base curves of that
+/// family's strips (build them with `lml_strips_new` at the family's θ, then the net's nodes with
+/// `lml_strip_net_new`).
+///
+/// Returns as `lml_curves_new_uniform`, and `LML_STATUS_INVALID_ARGUMENT` for `k` > 1.
+#[no_mangle]
+pub unsafe extern "C" fn lml_curves_new_from_net(net: *const LmlNet, k: u32, count: usize, spacing: f64, out: *mut *mut LmlCurves) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): writable `out`; live `net` handle.
+        let mut out = unsafe { Out::new(out, "out") }?;
+        out.set(std::ptr::null_mut());
+        let net = unsafe { handle(net, "net") }?;
+        let values = net.field(k)?;
+        out.set_owned(extract(&net.mesh, &values, |values| Ok(uniform_levels(&net.mesh, values, count)?), spacing)?);
         Ok(LmlStatus::Ok)
     })
 }

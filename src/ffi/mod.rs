@@ -12,7 +12,7 @@
 //! metrics ([`LmlStrips`]), each a handle module with `lml_<handle>_new` / `_free` and two-call
 //! array outputs, and the initialisation of Sec. 3.2.2: boundary start points, traced guide
 //! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes; and nets of two
-//! families ([`LmlNet`], paper Sec. 4.1); surface optimisation ([`LmlReshape`], Sec. 3.3);
+//! families ([`LmlNet`], paper Sec. 4.1) with their quad net and nodes ([`LmlStripNet`]); surface optimisation ([`LmlReshape`], Sec. 3.3);
 //! and the interactive 3D viewer page of strips (`lml_strips_view_html`).
 //!
 //! The header is generated from this module by cbindgen (configuration in `cbindgen.toml`);
@@ -50,6 +50,7 @@ mod guides;
 mod initial_fields;
 mod fabrication;
 mod net;
+mod strip_net;
 mod view;
 mod reshape;
 
@@ -72,6 +73,7 @@ pub use search::*;
 pub use session::*;
 pub use status::*;
 pub use strip_metrics::*;
+pub use strip_net::*;
 pub use strip_params::*;
 pub use strips::*;
 pub use trace_options::*;

@@ -8,12 +8,26 @@ use super::status::LmlStatus;
 use super::failure::Failure;
 use crate::field::{Family, FieldError};
 use crate::initialisation::{SearchError, SearchOptions};
+use crate::mesh::TriMesh;
 use crate::net::{net_start, NetParams, NetReport, NetSolver};
+use std::sync::Arc;
 
 /// A net optimisation session (opaque): a copy of the mesh, the two fields, their auxiliary
 /// variables and the solver state. Create it with `lml_net_new`, release it with `lml_net_free`.
 pub struct LmlNet {
     solver: NetSolver,
+    /// The surface, shared with the curves extracted from the net's fields.
+    pub(crate) mesh: Arc<TriMesh>,
+}
+
+impl LmlNet {
+    /// Field `k` (0 or 1), or the failure naming `k`.
+    pub(crate) fn field(&self, k: u32) -> Result<Vec<f64>, Failure> {
+        if k > 1 {
+            return Err(Failure::new(LmlStatus::InvalidArgument, format!("k: a net has fields 0 and 1, got {k}")));
+        }
+        Ok(self.solver.field(k as usize))
+    }
 }
 
 /// The state of a net optimisation after `lml_net_step` (written by the library; the caller owns
@@ -96,7 +110,8 @@ pub unsafe extern "C" fn lml_net_new(
         params.min_intersection_degrees = min_intersection_degrees;
         params.intersection_degrees = (!intersection_degrees.is_nan()).then_some(intersection_degrees);
         let (first, second) = fields.split_at(n);
-        out.set_owned(LmlNet { solver: NetSolver::new(&mesh.mesh, &[first.to_vec(), second.to_vec()], params)? });
+        let solver = NetSolver::new(&mesh.mesh, &[first.to_vec(), second.to_vec()], params)?;
+        out.set_owned(LmlNet { solver, mesh: Arc::new(mesh.mesh.clone()) });
         Ok(LmlStatus::Ok)
     })
 }
@@ -193,9 +208,6 @@ pub unsafe extern "C" fn lml_net_field(net: *const LmlNet, k: u32, values: *mut 
     guarded(|| {
         // SAFETY (both blocks): live handle; `values` writable for `capacity` doubles; `needed` writable.
         let net = unsafe { handle(net, "net") }?;
-        if k > 1 {
-            return Err(Failure::new(LmlStatus::InvalidArgument, format!("k: a net has fields 0 and 1, got {k}")));
-        }
-        unsafe { copy_out(&net.solver.field(k as usize), values, capacity, needed, "values") }
+        unsafe { copy_out(&net.field(k)?, values, capacity, needed, "values") }
     })
 }

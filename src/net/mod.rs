@@ -12,6 +12,7 @@ mod quad_net;
 mod report;
 mod solver;
 mod start;
+mod strip_net;
 
 pub use intersection::intersection_angles;
 pub use nodes::{flat_point, net_nodes, Node};
@@ -21,3 +22,4 @@ pub use problem::NetProblem;
 pub use report::{IntersectionReport, NetReport};
 pub use solver::NetSolver;
 pub use start::{net_start, START_CROSSING_DEGREES};
+pub use strip_net::{strip_levels, strip_net, StripNet, NODE_TOLERANCE_EDGES};

@@ -47,7 +47,8 @@ void test_fabrication(const LmlCurves *curves);
 void test_view(const LmlCurves *curves);
 
 /* A net of two families (geodesic circles and rulings on the cylinder): every invalid input,
- * stepping to convergence, both fields with the two-call pattern against the cylinder's axis. */
+ * stepping to convergence, both fields with the two-call pattern against the cylinder's axis,
+ * strips on both families with their quad net and nodes. */
 void test_net(const Cylinder *cylinder);
 
 /* Surface optimisation (Sec. 3.3) of the cylinder towards 45 degrees within an absolute tolerance:

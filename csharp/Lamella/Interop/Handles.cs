@@ -60,6 +60,12 @@ namespace Lamella.Interop
         protected override bool ReleaseHandle() { NativeMethods.lml_net_free(handle); return true; }
     }
 
+    internal sealed class StripNetHandle : LamellaHandle
+    {
+        public StripNetHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_strip_net_free(handle); return true; }
+    }
+
     internal sealed class ReshapeHandle : LamellaHandle
     {
         public ReshapeHandle() { }

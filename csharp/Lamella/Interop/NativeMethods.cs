@@ -88,6 +88,22 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_net_field(NetHandle net, uint k, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
 
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_curves_new_from_net(NetHandle net, uint k, UIntPtr count, double spacing, out CurvesHandle curves);
+
+        // LmlStripNet.
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_net_new(NetHandle net, StripsHandle stripsF, StripsHandle stripsG, out StripNetHandle stripNet);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_strip_net_free(IntPtr stripNet);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_net_vertices(StripNetHandle stripNet, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_net_levels(StripNetHandle stripNet, [Out] uint[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_net_quads(StripNetHandle stripNet, [Out] uint[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_net_nodes(StripNetHandle stripNet, [Out] NodeRecord[] buffer, UIntPtr capacity, out UIntPtr needed);
+
         // LmlReshape.
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_reshape_new(MeshHandle mesh, double[] field, UIntPtr n, double thetaDegrees, double tolerance,

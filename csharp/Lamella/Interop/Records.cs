@@ -81,6 +81,25 @@ namespace Lamella.Interop
     }
 
     /// <summary>
+    /// <c>LmlNode</c>: one node of a gridshell, where a strip of the first family crosses one of the second. The binding
+    /// hands it out as <see cref="Node"/>.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct NodeRecord
+    {
+        public ulong Vertex;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public ulong[] Strips;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public double[] ArcLengths;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 3)]
+        public double[] Position;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 3)]
+        public double[] Axis;
+        public double RulingAngleDegrees;
+    }
+
+    /// <summary>
     /// <c>LmlReshapeReport</c>: the state of a surface optimisation after a step (lengths in the mesh's units, angles
     /// in degrees). The binding hands it out as <see cref="ReshapeReport"/>.
     /// </summary>

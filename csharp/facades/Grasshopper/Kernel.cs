@@ -15,6 +15,27 @@ namespace Grasshopper
     }
 }
 
+namespace Grasshopper
+{
+    public class DataTree<T> : Grasshopper.Kernel.Data.IGH_DataTree
+    {
+        public DataTree() { throw new NotSupportedException("facade"); }
+        public void AddRange(IEnumerable<T> data, Grasshopper.Kernel.Data.GH_Path path) { throw new NotSupportedException("facade"); }
+    }
+}
+
+namespace Grasshopper.Kernel.Data
+{
+    public interface IGH_DataTree
+    {
+    }
+
+    public class GH_Path
+    {
+        public GH_Path(int index) { throw new NotSupportedException("facade"); }
+    }
+}
+
 namespace Grasshopper.Kernel
 {
     public enum GH_ParamAccess { item = 0, list = 1, tree = 2 }
@@ -69,6 +90,7 @@ namespace Grasshopper.Kernel
         bool GetDataList<T>(int index, List<T> list);
         bool SetData(int paramIndex, object data);
         bool SetDataList(int paramIndex, IEnumerable data);
+        bool SetDataTree(int paramIndex, Grasshopper.Kernel.Data.IGH_DataTree tree);
         int Iteration { get; }
     }
 

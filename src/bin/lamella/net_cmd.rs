@@ -19,7 +19,7 @@ use crate::view_cmd::write_view;
 use lamella::fabrication::{plan_fabrication, FabricationStrip};
 use lamella::field::Family;
 use lamella::initialisation::SearchOptions;
-use lamella::net::{flat_point, net_nodes, quad_net_at, NetParams, NetReport, NetSolver, Node, QuadNet};
+use lamella::net::{flat_point, net_nodes, quad_net_at, NetParams, NetReport, NetSolver, Node, QuadNet, NODE_TOLERANCE_EDGES};
 use lamella::strips::{PatternMetrics, StripPattern};
 use serde_json::{json, Value};
 use std::fmt::Write as _;
@@ -107,7 +107,7 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
         levels
     }));
     let net = quad_net_at(&mesh, &fields[0], &fields[1], levels);
-    let nodes = net_nodes(&net, [&runs[0].pattern, &runs[1].pattern], 2.0 * mesh.mean_edge_length());
+    let nodes = net_nodes(&net, [&runs[0].pattern, &runs[1].pattern], NODE_TOLERANCE_EDGES * mesh.mean_edge_length());
     let strips_seconds = strips_started.elapsed().as_secs_f64();
 
     for (k, run) in runs.iter().enumerate() {
