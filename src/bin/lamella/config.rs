@@ -237,12 +237,16 @@ fn resolve_start(flags: Option<&StartFlags>, file: &ConfigFile) -> CliResult<Sta
 
 /// `X,Y,Z` as a vector.
 fn parse_direction(text: &str) -> CliResult<Vec3> {
-    let values: Vec<f64> = text.split(',').map(|v| v.trim().parse::<f64>()).collect::<Result<_, _>>().map_err(|_| {
-        CliError::bad_input(format!("parameter --direction = {} is not three numbers X,Y,Z", clip(text)))
-    })?;
+    parse_vector("direction", text)
+}
+
+/// `X,Y,Z` as a vector; errors name the flag `--{name}`.
+pub fn parse_vector(name: &str, text: &str) -> CliResult<Vec3> {
+    let error = || CliError::bad_input(format!("parameter --{name} = {} is not three numbers X,Y,Z", clip(text)));
+    let values: Vec<f64> = text.split(',').map(|v| v.trim().parse::<f64>()).collect::<Result<_, _>>().map_err(|_| error())?;
     match values.as_slice() {
-        [x, y, z] => Ok(Vec3::new(*x, *y, *z)),
-        _ => Err(CliError::bad_input(format!("parameter --direction = {} is not three numbers X,Y,Z", clip(text)))),
+        [x, y, z] if values.iter().all(|v| v.is_finite()) => Ok(Vec3::new(*x, *y, *z)),
+        _ => Err(error()),
     }
 }
 
