@@ -186,3 +186,32 @@ pub(crate) fn auxiliaries(mode: LightMode) -> usize {
         LightMode::Pass => light_rows::PASS_AUXILIARIES,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shading::{EarthFrame, LightRegion};
+    use crate::solver::check_block_jacobian;
+    use crate::surfaces::{hall_roof, SplitMix64};
+
+    #[test]
+    fn the_light_blocks_jacobians_match_finite_differences() {
+        let (mesh, _) = hall_roof(300).into_mesh().unwrap().unit_scaled();
+        let frame = EarthFrame::new(47.4, crate::mesh::Vec3::y(), crate::mesh::Vec3::z()).unwrap();
+        let region = LightRegion::new([-40.0, 20.0], [10.0, 23.0]).unwrap();
+        let labels: Vec<VertexLabel> = (0..mesh.vertex_count()).map(|v| [VertexLabel::Block, VertexLabel::Pass, VertexLabel::Free][v % 3]).collect();
+        let problem = ShadingProblem::new(mesh, &labels, frame, [region.bounds(); 2], crate::shading::ShadingWeights::blocking());
+        let mut rng = SplitMix64::new(9);
+        let mut x: Vec<f64> = (0..problem.variable_count()).map(|_| rng.symmetric(1.0)).collect();
+        for (v, p) in problem.mesh().positions().iter().enumerate() {
+            x[v] = p.x + 0.3 * p.y + 0.05 * rng.symmetric(1.0);
+        }
+        let first_light = problem.block_count() - problem.light_vertices().len();
+        let modes: Vec<LightMode> = problem.light_vertices().iter().map(|v| v.mode).collect();
+        assert!(modes.contains(&LightMode::Block) && modes.contains(&LightMode::Pass));
+        for b in first_light..problem.block_count() {
+            let error = check_block_jacobian(&problem, &x, b, 1e-6);
+            assert!(error < 1e-5, "block {b}: Jacobian error {error:e}");
+        }
+    }
+}
