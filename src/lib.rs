@@ -20,6 +20,7 @@ pub mod mesh;
 pub mod net;
 pub mod quality;
 pub mod reshape;
+pub mod shading;
 pub mod solver;
 pub mod strips;
 pub mod surfaces;

@@ -33,6 +33,7 @@ pub use isophote::reachable_boundary;
 pub use field_solver::{FieldSolver, FIELD_VALUE_LIMIT, MAX_LM_TRIALS};
 pub(crate) use field_solver::{stage_weights, validate_field, validate_lm, validate_params};
 pub(crate) use gradient_norm::mean_gradient_norm;
+pub(crate) use level_jet::{JetStencil, LevelJet};
 pub(crate) use report::problem_frames;
 pub use level_angles::{level_angles, AngleRange, LevelAngles};
 pub use problem::FieldProblem;

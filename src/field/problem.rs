@@ -23,7 +23,7 @@ use super::hessian_energy::HessianEnergy;
 use super::params::{Family, Weights};
 use super::pseudo_geodesic::TargetAngle;
 use super::{asymptotic, constant_slope, geodesic, gradient_norm, pseudo_geodesic};
-use super::level_jet::JetStencils;
+use super::level_jet::{JetStencil, JetStencils};
 use super::level_jet::LevelJet;
 use crate::mesh::{TriMesh, Vec3};
 use crate::solver::{LeastSquaresProblem, VariableLayout};
@@ -213,6 +213,11 @@ impl FieldProblem {
     /// vanishing fitted gradient).
     pub(crate) fn level_jet(&self, k: usize, x: &[f64]) -> Option<LevelJet> {
         level_jet_at(&self.mesh, &self.jets.get(k), self.curve_vertices[k] as usize, x)
+    }
+
+    /// The stencil of the local fit at the `k`-th curve vertex (the field values its level jet reads).
+    pub(crate) fn jet_stencil(&self, k: usize) -> JetStencil<'_> {
+        self.jets.get(k)
     }
 
     /// The level frame of the `k`-th curve vertex at `x` (see [`super::darboux`]).

@@ -66,12 +66,18 @@ impl FaceBvh {
     /// Builds the hierarchy by recursive median splits along the longest axis of the face
     /// centroids' box (deterministic: ties by face index).
     pub fn new(mesh: &TriMesh) -> FaceBvh {
-        let boxes: Vec<Aabb> = mesh
-            .faces()
+        let corners: Vec<[Vec3; 3]> = mesh.faces().iter().map(|f| f.map(|v| mesh.positions()[v as usize])).collect();
+        FaceBvh::over_triangles(&corners)
+    }
+
+    /// The hierarchy over a triangle soup (`corners[f]` the corners of triangle `f`), for
+    /// [`Self::ray_hits`] on geometry that is not one valid mesh (e.g. the strips of a pattern).
+    pub fn over_triangles(corners: &[[Vec3; 3]]) -> FaceBvh {
+        let boxes: Vec<Aabb> = corners
             .iter()
             .map(|f| {
                 let mut b = Aabb::empty();
-                f.iter().for_each(|&v| b.grow(&mesh.positions()[v as usize]));
+                f.iter().for_each(|p| b.grow(p));
                 b
             })
             .collect();
@@ -144,6 +150,75 @@ impl FaceBvh {
         }
         best
     }
+
+    /// Whether the ray `origin + s · direction`, `s > 0`, meets one of the triangles `corners`
+    /// (those the hierarchy was built over, [`Self::over_triangles`]). Exact Möller–Trumbore
+    /// tests; a ray through an edge or corner counts as a hit. `false` for a non-finite ray or a
+    /// zero direction.
+    pub fn ray_hits(&self, corners: &[[Vec3; 3]], origin: &Vec3, direction: &Vec3) -> bool {
+        let finite = |v: &Vec3| v.iter().all(|x| x.is_finite());
+        if self.nodes.is_empty() || !finite(origin) || !finite(direction) || direction.norm_squared() == 0.0 {
+            return false;
+        }
+        let inverse = direction.map(|d| 1.0 / d);
+        let mut stack = vec![0usize];
+        while let Some(n) = stack.pop() {
+            let node = self.nodes[n];
+            if !node.bounds.meets_ray(origin, &inverse) {
+                continue;
+            }
+            if !node.leaf {
+                stack.push(node.second);
+                stack.push(node.first);
+                continue;
+            }
+            if self.order[node.first..node.second].iter().any(|&f| ray_meets_triangle(origin, direction, &corners[f])) {
+                return true;
+            }
+        }
+        false
+    }
+}
+
+/// Möller–Trumbore: whether `origin + s · direction`, `s > 0`, meets the closed triangle.
+fn ray_meets_triangle(origin: &Vec3, direction: &Vec3, [a, b, c]: &[Vec3; 3]) -> bool {
+    let (e1, e2) = (b - a, c - a);
+    let p = direction.cross(&e2);
+    let det = e1.dot(&p);
+    if det == 0.0 || !det.is_finite() {
+        return false;
+    }
+    let s = origin - a;
+    let u = s.dot(&p) / det;
+    if !(0.0..=1.0).contains(&u) {
+        return false;
+    }
+    let q = s.cross(&e1);
+    let v = direction.dot(&q) / det;
+    if v < 0.0 || u + v > 1.0 {
+        return false;
+    }
+    e2.dot(&q) / det > 0.0
+}
+
+impl Aabb {
+    /// Slab test: whether the ray `origin + s · d`, `s ≥ 0`, meets the box (`inverse` = 1/d
+    /// componentwise, infinite for zero components).
+    fn meets_ray(&self, origin: &Vec3, inverse: &Vec3) -> bool {
+        let (mut near, mut far) = (0.0f64, f64::INFINITY);
+        for k in 0..3 {
+            let (t0, t1) = ((self.low[k] - origin[k]) * inverse[k], (self.high[k] - origin[k]) * inverse[k]);
+            // 0 · ∞ (a ray in the slab's plane) is NaN: the slab does not limit the ray then.
+            let (lo, hi) = if t0 <= t1 { (t0, t1) } else { (t1, t0) };
+            if !lo.is_nan() {
+                near = near.max(lo);
+            }
+            if !hi.is_nan() {
+                far = far.min(hi);
+            }
+        }
+        near <= far
+    }
 }
 
 #[cfg(test)]
@@ -170,5 +245,26 @@ mod tests {
             assert_eq!(found.face, scan.1);
         }
         assert!(bvh.closest(&mesh, &Vec3::new(f64::NAN, 0.0, 0.0)).is_none());
+    }
+
+    #[test]
+    fn a_ray_hits_what_a_scan_of_every_triangle_hits() {
+        let mesh = hall_roof(800).into_mesh().unwrap();
+        let corners: Vec<[Vec3; 3]> = mesh.faces().iter().map(|f| f.map(|v| mesh.positions()[v as usize])).collect();
+        let bvh = FaceBvh::over_triangles(&corners);
+        let mut rng = SplitMix64::new(5);
+        let mut hits = 0;
+        for _ in 0..400 {
+            let origin = Vec3::new(rng.symmetric(25.0), rng.symmetric(15.0), rng.symmetric(10.0));
+            let direction = Vec3::new(rng.symmetric(1.0), rng.symmetric(1.0), rng.symmetric(1.0));
+            let scan = corners.iter().any(|c| ray_meets_triangle(&origin, &direction, c));
+            assert_eq!(bvh.ray_hits(&corners, &origin, &direction), scan);
+            hits += scan as usize;
+        }
+        assert!(hits > 40 && hits < 360, "{hits} of 400 rays hit: the test should see both outcomes");
+        // A ray straight down through the roof's top and a ray pointing away from it.
+        let top = mesh.positions().iter().fold(Vec3::repeat(f64::NEG_INFINITY), |a, p| if p.z > a.z { *p } else { a });
+        assert!(bvh.ray_hits(&corners, &(top + Vec3::new(0.01, 0.01, 5.0)), &-Vec3::z()));
+        assert!(!bvh.ray_hits(&corners, &(top + Vec3::new(0.0, 0.0, 5.0)), &Vec3::z()));
     }
 }

@@ -58,6 +58,13 @@ pub enum Command {
     /// (coloured by displacement), report.json; exits 3 when the strips on the moved surface
     /// still miss θ.
     Reshape(ReshapeArgs),
+    /// A shading system (paper Sec. 6): strips that block the sun of the given dates and hours
+    /// (or let it through where --pass says), then a sun-path check casting the sun's rays from
+    /// behind the surface through the strips. Writes curves.obj, strips.obj, rulings.obj,
+    /// field.csv, unrolled.svg, shading.svg (surface coloured by blocked fraction), sunpath.svg,
+    /// report.json; exits 3 when a block region is not blocked or a pass region not passed to
+    /// the stated fractions.
+    Shade(ShadeArgs),
 }
 
 /// Progress and summary output.
@@ -448,6 +455,84 @@ pub struct ReshapeArgs {
     /// command exits 3, "no acceptable family" (as `design`).
     #[arg(long, value_name = "DEGREES", default_value_t = 2.0, allow_negative_numbers = true)]
     pub angle_tolerance: f64,
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub verbosity: VerbosityArgs,
+}
+
+#[derive(Args, Debug, Clone)]
+pub struct ShadeArgs {
+    #[command(flatten)]
+    pub mesh: MeshArgs,
+    /// Geographic latitude in degrees, north positive.
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
+    pub latitude: f64,
+    /// Longitude in degrees, east positive; with --time-zone the hours are clock time,
+    /// without both they are true solar time.
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true, requires = "time_zone")]
+    pub longitude: Option<f64>,
+    /// Time zone in hours east of UTC (e.g. 1 for CET); needs --longitude.
+    #[arg(long, value_name = "HOURS", allow_negative_numbers = true, requires = "longitude")]
+    pub time_zone: Option<f64>,
+    /// North in model coordinates, X,Y,Z (made horizontal).
+    #[arg(long, value_name = "X,Y,Z", default_value = "0,1,0", allow_hyphen_values = true)]
+    pub north: String,
+    /// Up in model coordinates, X,Y,Z.
+    #[arg(long, value_name = "X,Y,Z", default_value = "0,0,1", allow_hyphen_values = true)]
+    pub up: String,
+    /// Dates MM-DD..MM-DD, both included (a range may run over the new year).
+    #[arg(long, value_name = "MM-DD..MM-DD", default_value = "06-01..08-31")]
+    pub dates: String,
+    /// Daily hours H..H to shade (decimal hours, e.g. 9.5..16).
+    #[arg(long, value_name = "H..H", default_value = "10..16")]
+    pub hours: String,
+    /// Daily hours H..H whose light the --pass vertices let through [default: --hours].
+    #[arg(long, value_name = "H..H")]
+    pub pass_hours: Option<String>,
+    /// The light region of blocking given directly as δ interval MIN..MAX in degrees (paper
+    /// Sec. 6, Eq. 24) instead of from the dates and hours; needs --gamma.
+    #[arg(long, value_name = "MIN..MAX", allow_hyphen_values = true, requires = "gamma")]
+    pub delta: Option<String>,
+    /// The γ interval MIN..MAX in degrees of a direct light region; needs --delta.
+    #[arg(long, value_name = "MIN..MAX", allow_hyphen_values = true, requires = "delta")]
+    pub gamma: Option<String>,
+    /// Vertices that block (one value per vertex and line, non-zero = block); the others are
+    /// free unless --pass names them [default: every vertex not in --pass blocks].
+    #[arg(long, value_name = "mask.csv")]
+    pub mask: Option<PathBuf>,
+    /// Vertices that let the light through (one value per vertex and line, non-zero = pass).
+    #[arg(long, value_name = "pass.csv")]
+    pub pass: Option<PathBuf>,
+    /// Width in edge rings of the free transition on each side of a block/pass border.
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    pub ring: usize,
+    /// Start field: the height along X,Y,Z [default: along the earth axis when blocking (the
+    /// paper's planar start), across the central light when only letting through].
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, conflicts_with = "start_field")]
+    pub start_direction: Option<String>,
+    /// Start field from a file (one value per vertex and line).
+    #[arg(long, value_name = "field.csv")]
+    pub start_field: Option<PathBuf>,
+    /// Most Levenberg–Marquardt iterations, 1 to 100000.
+    #[arg(long, value_name = "N", default_value_t = 100)]
+    pub max_iterations: usize,
+    /// Number of strips, 1 to 1000.
+    #[arg(long, value_name = "N", default_value_t = 20)]
+    pub strips: usize,
+    /// Strip width in metres [default: the spacing of the level curves].
+    #[arg(long, value_name = "LENGTH")]
+    pub width: Option<String>,
+    /// Distance of the sample points behind the surface, in metres [default: 5 % of the mean
+    /// curve spacing].
+    #[arg(long, value_name = "LENGTH")]
+    pub offset: Option<String>,
+    /// Least blocked fraction of the direct-sun hours in the block region; below it, exit 3.
+    #[arg(long, value_name = "FRACTION", default_value_t = 0.8)]
+    pub min_blocked: f64,
+    /// Largest blocked fraction of the direct-sun hours in the pass region; above it, exit 3.
+    #[arg(long, value_name = "FRACTION", default_value_t = 0.2)]
+    pub max_blocked_pass: f64,
     #[command(flatten)]
     pub out: OutArgs,
     #[command(flatten)]

@@ -235,12 +235,12 @@ fn resolve_start(flags: Option<&StartFlags>, file: &ConfigFile) -> CliResult<Sta
     }
 }
 
-/// `X,Y,Z` as a vector; errors name the parameter `flag`.
+/// `X,Y,Z` as a vector of finite numbers; errors name the parameter `flag`.
 pub fn parse_vector(flag: &str, text: &str) -> CliResult<Vec3> {
     let bad = || CliError::bad_input(format!("parameter {flag} = {} is not three numbers X,Y,Z", clip(text)));
     let values: Vec<f64> = text.split(',').map(|v| v.trim().parse::<f64>()).collect::<Result<_, _>>().map_err(|_| bad())?;
     match values.as_slice() {
-        [x, y, z] => Ok(Vec3::new(*x, *y, *z)),
+        [x, y, z] if values.iter().all(|v| v.is_finite()) => Ok(Vec3::new(*x, *y, *z)),
         _ => Err(bad()),
     }
 }

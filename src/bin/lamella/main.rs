@@ -23,6 +23,7 @@ mod output_dir;
 mod progress;
 mod report_json;
 mod reshape_cmd;
+mod shade_cmd;
 mod slope_field;
 mod start_field;
 mod strip_obj;
@@ -71,5 +72,6 @@ fn run(cli: &Cli) -> CliResult<()> {
         Some(Command::Net(args)) => net_cmd::run(args),
         Some(Command::View(args)) => view_cmd::run(args),
         Some(Command::Reshape(args)) => reshape_cmd::run(args),
+        Some(Command::Shade(args)) => shade_cmd::run(args),
     }
 }

@@ -32,7 +32,7 @@ pub struct StripRun {
 }
 
 /// Area-weighted mean `‖∇F‖` over the faces (`∇F` piecewise constant).
-fn mean_gradient_norm(mesh: &TriMesh, field: &[f64]) -> f64 {
+pub fn mean_gradient_norm(mesh: &TriMesh, field: &[f64]) -> f64 {
     let mut weighted = 0.0;
     let mut area = 0.0;
     for (f, face) in mesh.faces().iter().enumerate() {

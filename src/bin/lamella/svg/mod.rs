@@ -3,6 +3,8 @@
 pub mod convergence;
 pub mod cut_sheet;
 pub mod preview;
+pub mod shading;
+pub mod sunpath;
 
 use std::fmt::Write as _;
 
