@@ -54,4 +54,9 @@ void test_net(const Cylinder *cylinder);
 /* Surface optimisation (Sec. 3.3) of the cylinder towards 45 degrees within an absolute tolerance:
  * every invalid input, stepping, positions and deviations against the distance from the axis. */
 void test_reshape(const Cylinder *cylinder);
+
+/* Constant-slope families on the cylinder: every invalid input, the start field and the solve
+ * about its axis (helices, straight in the development at the slope), and the boundary of the
+ * reachable region about an axis across it (the ruling where the tangent planes have the slope). */
+void test_slope(const Cylinder *cylinder);
 #endif
