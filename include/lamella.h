@@ -75,7 +75,7 @@
 // Version of the C ABI described by this header. It changes whenever a function signature,
 // a struct layout or the meaning of a constant changes incompatibly; compare it with
 // `lml_abi_version()` at start-up to detect a header / library mismatch.
-#define LML_ABI_VERSION 1
+#define LML_ABI_VERSION 2
 
 // `LmlCandidate::kind`: the height along `direction` (negated if `negated` is 1).
 #define LML_START_HEIGHT 0
@@ -1570,6 +1570,14 @@ LmlStatus lml_field_values_from_slope(const struct LmlMesh *mesh,
                                       double *out,
                                       size_t capacity,
                                       size_t *needed);
+
+// Writes to `*slope_degrees` the slope β the constant-slope session `field` aims at: the given
+// one, or for `LML_FAMILY_FREE_SLOPE` the one fitted to the field before its last iteration (the
+// least-squares slope of its level curves).
+//
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, or a session of
+// another family).
+LmlStatus lml_field_slope(const struct LmlField *field, double *slope_degrees);
 
 // The boundary of the region where the slope `slope_degrees` about `axis` is reachable (paper
 // Sec. 5.2.3: the isophote where the tangent planes themselves have that slope, moved a little

@@ -6,6 +6,7 @@ use std::sync::Arc;
 
 use super::curves::LmlCurves;
 use super::failure::Failure;
+use super::field::LmlField;
 use super::guard::guarded;
 use super::mesh::LmlMesh;
 use super::raw::{copy_out, handle, input, Out};
@@ -58,6 +59,24 @@ pub unsafe extern "C" fn lml_field_values_from_slope(
         let axis = unsafe { read_axis(axis) }?;
         let field = slope_start_field(&mesh.mesh, axis, slope_degrees)?;
         unsafe { copy_out(&field, out, capacity, needed, "out") }
+    })
+}
+
+/// Writes to `*slope_degrees` the slope β the constant-slope session `field` aims at: the given
+/// one, or for `LML_FAMILY_FREE_SLOPE` the one fitted to the field before its last iteration (the
+/// least-squares slope of its level curves).
+///
+/// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, or a session of
+/// another family).
+#[no_mangle]
+pub unsafe extern "C" fn lml_field_slope(field: *const LmlField, slope_degrees: *mut f64) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live `field` handle, writable `slope_degrees`.
+        let field = unsafe { handle(field, "field") }?;
+        let mut out = unsafe { Out::new(slope_degrees, "slope_degrees") }?;
+        let slope = field.solver.slope_degrees().ok_or_else(|| Failure::argument("field", "is not a constant-slope session"))?;
+        out.set(slope);
+        Ok(LmlStatus::Ok)
     })
 }
 

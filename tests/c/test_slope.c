@@ -74,6 +74,29 @@ static double *curve_points(const LmlCurves *curves, size_t **offsets, size_t *c
     return points;
 }
 
+/* A free slope started at 20 degrees on the field of the 30 degree helices is fitted to them before
+ * the first iteration; a session of another family has no slope. */
+static void free_slope(const LmlMesh *mesh, const Cylinder *c, const double *helices)
+{
+    LmlFieldParams params;
+    LmlField *field = NULL, *other = NULL;
+    LmlReport report;
+    double reached = 0.0;
+    CHECK_STATUS(lml_field_params_default(LML_FAMILY_FREE_SLOPE, 20.0, &params), LML_STATUS_OK);
+    CHECK_STATUS(lml_field_new(mesh, helices, c->vertex_count, &params, &field), LML_STATUS_OK);
+    CHECK_STATUS(lml_field_step(field, 1, &report), LML_STATUS_MORE);
+    CHECK_STATUS(lml_field_slope(field, &reached), LML_STATUS_OK);
+    CHECK(fabs(reached - SLOPE) < 1.0);
+    printf("  free slope started at 20 deg on the %.0f deg helices: fitted %.3f deg\n", SLOPE, reached);
+    CHECK_STATUS(lml_field_params_default(LML_FAMILY_PSEUDO_GEODESIC, 60.0, &params), LML_STATUS_OK);
+    CHECK_STATUS(lml_field_new(mesh, helices, c->vertex_count, &params, &other), LML_STATUS_OK);
+    CHECK_STATUS(lml_field_slope(other, &reached), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("constant-slope");
+    CHECK_STATUS(lml_field_slope(NULL, &reached), LML_STATUS_INVALID_ARGUMENT);
+    lml_field_free(field);
+    lml_field_free(other);
+}
+
 /* Slope about the cylinder's axis: every level curve rises at SLOPE, measured by the chord over
  * two resampled points against the z axis (t.z = sin beta). */
 static void helices(const LmlMesh *mesh, const Cylinder *c)
@@ -85,7 +108,7 @@ static void helices(const LmlMesh *mesh, const Cylinder *c)
     LmlReport report;
     LmlStatus status = LML_STATUS_MORE;
     size_t needed = 0, count = 0, *offsets = NULL, i, k, measured = 0;
-    double *start = malloc(c->vertex_count * sizeof(double)), *points, worst = 0.0;
+    double *start = malloc(c->vertex_count * sizeof(double)), *points, worst = 0.0, reached = 0.0;
 
     if (start == NULL) {
         CHECK(!"out of memory");
@@ -117,6 +140,10 @@ static void helices(const LmlMesh *mesh, const Cylinder *c)
     }
     CHECK(measured > 50);
     CHECK(worst < 1.0);
+    CHECK_STATUS(lml_field_slope(field, &reached), LML_STATUS_OK);
+    CHECK(reached == SLOPE);
+    CHECK_STATUS(lml_field_slope(field, NULL), LML_STATUS_INVALID_ARGUMENT);
+    free_slope(mesh, c, start);
     printf("  constant slope %.0f deg about the cylinder's axis: %zu curves, %zu points, worst slope error %.3f deg after %llu iterations\n",
            SLOPE, count, measured, worst, (unsigned long long)report.iterations);
     free(offsets);

@@ -5,7 +5,7 @@
 
 use lamella::curves::{extract_level_curves, uniform_levels};
 use lamella::field::{reachable_boundary, slope_reachable, tangent_plane_inclination_degrees, Family, FieldError, FieldParams, FieldSolver, ISOPHOTE_MARGIN_DEGREES};
-use lamella::initialisation::slope_start_field;
+use lamella::initialisation::{slope_start_field, SearchOptions, StartSearch};
 use lamella::mesh::{TriMesh, Vec3};
 use lamella::surfaces::{vault, Vault};
 
@@ -107,4 +107,18 @@ fn bad_axes_and_slopes_are_refused_by_name() {
     }
     // A slope steeper than any tangent plane of the vault (its steepest is 50° against the horizontal).
     assert!(slope_start_field(&mesh, [0.0, 0.0, 1.0], 70.0).is_err());
+}
+
+#[test]
+fn the_start_search_refuses_a_constant_slope_family_by_name() {
+    let mesh = vault_mesh(300);
+    let family = Family::ConstantSlope { axis: [0.0, 0.0, 1.0], slope_degrees: 30.0, free_slope: false };
+    match StartSearch::new(&mesh, FieldParams::new(family), SearchOptions::default()) {
+        Err(FieldError::InvalidParameter { name, message }) => {
+            assert_eq!(name, "family");
+            assert!(message.contains("slope_start_field"), "{message}");
+        }
+        Err(other) => panic!("refused for another reason: {other}"),
+        Ok(_) => panic!("the search accepted a constant-slope family"),
+    }
 }
