@@ -25,6 +25,7 @@ mod cli_reshape;
 mod cli_shade;
 mod cli_slope;
 mod cli_steps;
+mod cli_surface;
 mod cli_view;
 
 mod curves_extraction;
