@@ -126,6 +126,12 @@
 // `lml_fabrication_text` kind: bom.csv, the bill of materials.
 #define LML_FABRICATION_TEXT_BOM_CSV 3
 
+// Most vertices of a built-in surface.
+#define LML_MAX_SURFACE_VERTICES 1000000
+
+// Most points of the u-lines of `lml_brauner_u_lines`, all lines together.
+#define LML_MAX_U_LINE_POINTS 1000000
+
 // Result of an `lml_*` call. `LML_STATUS_OK`, `LML_STATUS_MORE`, `LML_STATUS_CONVERGED` and
 // `LML_STATUS_NO_ACCEPTABLE_FAMILY` are successes (≥ 0: the outputs are valid); every failure
 // is negative, and `lml_last_error_message()` then says what went wrong and names the
@@ -1866,6 +1872,35 @@ LmlStatus lml_reshape_deviations(const struct LmlReshape *reshape,
                                  double *values,
                                  size_t capacity,
                                  size_t *needed);
+
+// Creates the Brauner surface of the paper's Fig. 32 (Eq. 23 with `f = e^{−v}(cos u + u sin u
+// + 2v cos u)`): `x = cos²u − 2v`, `y = sin u cos u − u`, `z = 2μ e^{−v} cos u` over
+// u ∈ [0.6, π − 0.6], v ∈ [−0.5, 0.5], triangulated by a jittered grid of about
+// `target_vertices` vertices (deterministic), faces oriented upwards. Its u-lines `v = const`
+// are asymptotic curves rising at the constant slope `atan(μ e^{−v})` (`lml_brauner_u_lines`).
+//
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL `out`, `target_vertices` below
+// 100 or above `LML_MAX_SURFACE_VERTICES`, `mu` not finite or ≤ 0, named); `*out` is NULL on
+// failure. Release the mesh with `lml_mesh_free`.
+LmlStatus lml_mesh_new_brauner(size_t target_vertices, double mu, struct LmlMesh **out);
+
+// The u-lines of the surface of `lml_mesh_new_brauner` with `mu`, computed exactly: `lines`
+// curves `v = v_k`, v_k spread evenly over [−0.5, 0.5] (ends included), each of `points` points
+// evenly spaced in u. Line k rises at the slope `atan(μ e^{−v_k})` against the horizontal.
+//
+// `out`: `lines × points` points, 3 doubles each, line after line. Two-call pattern: `*needed` is
+// set to `3 × lines × points`; a NULL `out` or a smaller `capacity` copies nothing and returns
+// `LML_STATUS_BUFFER_TOO_SMALL`.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_BUFFER_TOO_SMALL`; `LML_STATUS_INVALID_ARGUMENT` (NULL
+// `needed`, `lines` or `points` below 2, more than `LML_MAX_U_LINE_POINTS` points, `mu` not
+// finite or ≤ 0, named).
+LmlStatus lml_brauner_u_lines(double mu,
+                              size_t lines,
+                              size_t points,
+                              double *out,
+                              size_t capacity,
+                              size_t *needed);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -87,6 +87,44 @@ namespace Lamella.Tests
             }
         }
 
+        /// <summary>The Brauner surface of Fig. 32 against its closed form, and its u-lines rising at atan(μ e^{−v}).</summary>
+        [Test]
+        public void TheBraunerSurfaceAndItsULinesMatchTheClosedForm()
+        {
+            const double mu = 1.3;
+            using (LamellaMesh mesh = LamellaMesh.Brauner(500, mu))
+            {
+                double[] xyz = mesh.Positions();
+                Assert.That(mesh.VertexCount, Is.InRange(400, 600));
+                for (int v = 0; v < mesh.VertexCount; v++)
+                {
+                    double lo = 0.0, hi = Math.PI;
+                    for (int i = 0; i < 100; i++)
+                    {
+                        double mid = 0.5 * (lo + hi);
+                        if (Math.Sin(mid) * Math.Cos(mid) - mid > xyz[3 * v + 1]) lo = mid; else hi = mid;
+                    }
+                    double u = 0.5 * (lo + hi), w = (Math.Cos(u) * Math.Cos(u) - xyz[3 * v]) / 2.0;
+                    Assert.AreEqual(2.0 * mu * Math.Exp(-w) * Math.Cos(u), xyz[3 * v + 2], 1e-9);
+                }
+            }
+            double[][] lines = LamellaMesh.BraunerULines(mu, 4, 60);
+            Assert.AreEqual(4, lines.Length);
+            for (int k = 0; k < 4; k++)
+            {
+                double level = -0.5 + k / 3.0, slope = Math.Atan(mu * Math.Exp(-level)) * 180.0 / Math.PI;
+                for (int i = 0; i + 1 < 60; i++)
+                {
+                    double dx = lines[k][3 * i + 3] - lines[k][3 * i], dy = lines[k][3 * i + 4] - lines[k][3 * i + 1], dz = lines[k][3 * i + 5] - lines[k][3 * i + 2];
+                    Assert.AreEqual(slope, Math.Atan2(Math.Abs(dz), Math.Sqrt(dx * dx + dy * dy)) * 180.0 / Math.PI, 0.05);
+                }
+            }
+            var e = Assert.Throws<LamellaException>(() => LamellaMesh.Brauner(500, -1.0));
+            StringAssert.Contains("mu", e.NativeMessage);
+            e = Assert.Throws<LamellaException>(() => LamellaMesh.BraunerULines(mu, 1, 60));
+            StringAssert.Contains("lines", e.NativeMessage);
+        }
+
         [Test]
         public void BadSlopeInputsAreRefusedNamingTheElement()
         {

@@ -43,6 +43,38 @@ namespace Lamella
             return new LamellaMesh(handle);
         }
 
+        /// <summary>
+        /// The Brauner surface of the paper's Fig. 32 (Sec. 5.2.4, Eq. 23): x = cos²u − 2v, y = sin u cos u − u,
+        /// z = 2μ e^{−v} cos u over u ∈ [0.6, π − 0.6], v ∈ [−0.5, 0.5], about <paramref name="targetVertices"/> vertices
+        /// (100 to 1,000,000). Its u-lines (<see cref="BraunerULines"/>) are asymptotic curves of constant slope atan(μ e^{−v}).
+        /// </summary>
+        public static LamellaMesh Brauner(int targetVertices, double mu)
+        {
+            if (targetVertices < 0) throw new ArgumentOutOfRangeException(nameof(targetVertices));
+            MeshHandle handle;
+            Native.Check(NativeMethods.lml_mesh_new_brauner(Native.Size(targetVertices), mu, out handle));
+            return new LamellaMesh(handle);
+        }
+
+        /// <summary>
+        /// The u-lines v = v_k of <see cref="Brauner"/>'s surface, computed exactly: <paramref name="lines"/> (≥ 2) curves, v_k
+        /// spread evenly over [−0.5, 0.5], each of <paramref name="points"/> (≥ 2) points (x, y, z each). Line k rises at
+        /// the slope atan(μ e^{−v_k}) against the horizontal.
+        /// </summary>
+        public static double[][] BraunerULines(double mu, int lines, int points)
+        {
+            if (lines < 0) throw new ArgumentOutOfRangeException(nameof(lines));
+            if (points < 0) throw new ArgumentOutOfRangeException(nameof(points));
+            double[] xyz = Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_brauner_u_lines(mu, Native.Size(lines), Native.Size(points), b, c, out n));
+            var result = new double[lines][];
+            for (int k = 0; k < lines; k++)
+            {
+                result[k] = new double[3 * points];
+                Array.Copy(xyz, 3 * points * k, result[k], 0, 3 * points);
+            }
+            return result;
+        }
+
         /// <summary>The number of vertices.</summary>
         public int VertexCount
         {

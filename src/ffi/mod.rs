@@ -14,7 +14,8 @@
 //! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes; constant-slope
 //! families (Sec. 5.2.3) with their start field and reachable region; and nets of two
 //! families ([`LmlNet`], paper Sec. 4.1) with their quad net and nodes ([`LmlStripNet`]); surface optimisation ([`LmlReshape`], Sec. 3.3);
-//! and the interactive 3D viewer page of strips (`lml_strips_view_html`).
+//! the Brauner surface of Fig. 32 with its exact asymptotic u-lines; and the interactive 3D
+//! viewer page of strips (`lml_strips_view_html`).
 //!
 //! The header is generated from this module by cbindgen (configuration in `cbindgen.toml`);
 //! `tests/ffi_header.rs` fails when the committed header is stale and rewrites it when
@@ -55,6 +56,7 @@ mod net;
 mod strip_net;
 mod view;
 mod reshape;
+mod surfaces;
 
 pub use boundary_starts::*;
 pub use curves::*;
@@ -79,6 +81,7 @@ pub use strip_metrics::*;
 pub use strip_net::*;
 pub use strip_params::*;
 pub use strips::*;
+pub use surfaces::*;
 pub use trace_options::*;
 pub use version::*;
 pub use view::*;

@@ -128,6 +128,20 @@ impl BraunerSurface {
         Some((u, 0.5 * (u.cos().powi(2) - x)))
     }
 
+    /// `count ≥ 2` values of v spread evenly over [`Self::v_range`], ends included: the u-lines
+    /// [`Self::u_line`] draws.
+    pub fn u_line_levels(&self, count: usize) -> Vec<f64> {
+        let [v0, v1] = self.v_range;
+        (0..count).map(|k| v0 + (v1 - v0) * k as f64 / (count.max(2) - 1) as f64).collect()
+    }
+
+    /// `points ≥ 2` points of the u-line `v = const` of the paper's surface, evenly spaced in u over
+    /// [`Self::u_range`]: an asymptotic curve of constant slope [`brauner_slope_degrees`].
+    pub fn u_line(&self, v: f64, points: usize) -> Vec<Vec3> {
+        let [u0, u1] = self.u_range;
+        (0..points).map(|i| brauner_point(&PaperHeatSolution, self.mu, u0 + (u1 - u0) * i as f64 / (points.max(2) - 1) as f64, v)).collect()
+    }
+
     /// The exact upward unit normal of the paper's surface at `(u, v)`:
     /// `(−m cos u, −m sin u, 1) / √(1 + m²)`, `m = μ e^{−v}` (the orientation of the mesh's faces).
     pub fn normal(&self, u: f64, v: f64) -> Vec3 {

@@ -195,6 +195,69 @@ static void reachable_boundary(const LmlMesh *mesh)
     lml_curves_free(curves);
 }
 
+/* The Brauner surface of Fig. 32 (mu = 0.8) against its closed form x = cos^2 u - 2v,
+ * y = sin u cos u - u, z = 2 mu e^-v cos u, and its u-lines rising at atan(mu e^-v). */
+static void brauner(void)
+{
+    const double mu = 0.8;
+    LmlMesh *mesh = (LmlMesh *)&mu;
+    size_t count = 0, needed = 0, v, k, i;
+    double *xyz, *lines, worst_z = 0.0, worst_slope = 0.0;
+
+    CHECK_STATUS(lml_mesh_new_brauner(50, mu, &mesh), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("target_vertices");
+    CHECK(mesh == NULL);
+    CHECK_STATUS(lml_mesh_new_brauner(400, 0.0, &mesh), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("mu");
+    CHECK_STATUS(lml_mesh_new_brauner(400, NAN, NULL), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_STATUS(lml_brauner_u_lines(mu, 1, 10, NULL, 0, &needed), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("lines");
+    CHECK_STATUS(lml_brauner_u_lines(-1.0, 3, 10, NULL, 0, &needed), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_STATUS(lml_brauner_u_lines(mu, 3, 10, NULL, 0, NULL), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_STATUS(lml_brauner_u_lines(mu, 1000, 10000, NULL, 0, &needed), LML_STATUS_INVALID_ARGUMENT);
+
+    CHECK_STATUS(lml_mesh_new_brauner(400, mu, &mesh), LML_STATUS_OK);
+    CHECK_STATUS(lml_mesh_vertex_count(mesh, &count), LML_STATUS_OK);
+    CHECK(count > 300 && count < 500);
+    xyz = malloc(3 * count * sizeof(double));
+    CHECK_STATUS(lml_mesh_positions(mesh, xyz, xyz ? 3 * count : 0, &needed), xyz ? LML_STATUS_OK : LML_STATUS_BUFFER_TOO_SMALL);
+    for (v = 0; xyz != NULL && v < count; v++) {
+        /* u from y = sin u cos u - u, decreasing on (0, pi). */
+        double lo = 0.0, hi = PI, u, w;
+        for (i = 0; i < 100; i++) {
+            double mid = 0.5 * (lo + hi);
+            if (sin(mid) * cos(mid) - mid > xyz[3 * v + 1]) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        u = 0.5 * (lo + hi);
+        w = (cos(u) * cos(u) - xyz[3 * v]) / 2.0;
+        worst_z = fmax(worst_z, fabs(xyz[3 * v + 2] - 2.0 * mu * exp(-w) * cos(u)));
+    }
+    CHECK(worst_z < 1e-9);
+    free(xyz);
+    lml_mesh_free(mesh);
+
+    CHECK_STATUS(lml_brauner_u_lines(mu, 3, 50, NULL, 0, &needed), LML_STATUS_BUFFER_TOO_SMALL);
+    CHECK(needed == 3 * 3 * 50);
+    lines = malloc(needed * sizeof(double));
+    CHECK_STATUS(lml_brauner_u_lines(mu, 3, 50, lines, lines ? needed : 0, &needed), lines ? LML_STATUS_OK : LML_STATUS_BUFFER_TOO_SMALL);
+    for (k = 0; lines != NULL && k < 3; k++) {
+        double level = -0.5 + 0.5 * (double)k, slope = atan(mu * exp(-level)) * 180.0 / PI;
+        for (i = 0; i + 1 < 50; i++) {
+            const double *a = lines + 3 * (50 * k + i), *b = a + 3;
+            double rise = atan2(fabs(b[2] - a[2]), hypot(b[0] - a[0], b[1] - a[1])) * 180.0 / PI;
+            worst_slope = fmax(worst_slope, fabs(rise - slope));
+        }
+    }
+    CHECK(worst_slope < 0.05);
+    printf("  Brauner surface (mu %.1f): %zu vertices on the closed form within %.1e; u-lines rise at atan(mu e^-v) within %.4f deg\n",
+           mu, count, worst_z, worst_slope);
+    free(lines);
+}
+
 void test_slope(const Cylinder *c)
 {
     LmlMesh *mesh = NULL;
@@ -206,4 +269,5 @@ void test_slope(const Cylinder *c)
     helices(mesh, c);
     reachable_boundary(mesh);
     lml_mesh_free(mesh);
+    brauner();
 }

@@ -31,6 +31,10 @@ namespace Lamella.Interop
 
         // LmlMesh.
         [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_mesh_new_brauner(UIntPtr targetVertices, double mu, out MeshHandle mesh);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_brauner_u_lines(double mu, UIntPtr lines, UIntPtr points, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_mesh_new(double[] xyz, UIntPtr vertexCount, uint[] triangles, UIntPtr triangleCount, out MeshHandle mesh);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_mesh_read_obj(byte[] utf8Path, out MeshHandle mesh);

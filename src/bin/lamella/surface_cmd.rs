@@ -9,8 +9,8 @@ use crate::progress::{summary, Verbosity};
 use crate::report_json::pretty;
 use crate::strip_obj::curves_obj;
 use lamella::curves::LevelCurve;
-use lamella::mesh::TriMesh;
-use lamella::surfaces::{brauner_point, brauner_slope_degrees, brauner_surface, hall_roof, BraunerSurface, PaperHeatSolution};
+use lamella::mesh::{TriMesh, Vec3};
+use lamella::surfaces::{brauner_slope_degrees, brauner_surface, hall_roof, BraunerSurface};
 use serde_json::{json, Value};
 use std::path::PathBuf;
 
@@ -71,18 +71,13 @@ fn brauner(args: &SurfaceArgs, vertices: usize) -> CliResult<(TriMesh, Vec<Level
     }
     // brauner_surface checks μ (finite, > 0) and names it.
     let mesh = brauner_surface(&surface).map_err(|e| CliError::bad_input(format!("brauner surface: {e}")))?.into_mesh().map_err(|e| CliError::internal(format!("brauner surface: {e}")))?;
-    let ([u0, u1], [v0, v1]) = (surface.u_range, surface.v_range);
-    let lines: Vec<LevelCurve> = (0..count)
-        .map(|k| {
-            let v = v0 + (v1 - v0) * k as f64 / (count - 1) as f64;
-            let us = (0..LINE_POINTS).map(|i| u0 + (u1 - u0) * i as f64 / (LINE_POINTS - 1) as f64);
-            LevelCurve {
-                level: v,
-                points: us.clone().map(|u| brauner_point(&PaperHeatSolution, surface.mu, u, v)).collect(),
-                normals: us.map(|u| surface.normal(u, v)).collect(),
-                closed: false,
-                singular_vertices: Vec::new(),
-            }
+    let lines: Vec<LevelCurve> = surface
+        .u_line_levels(count)
+        .into_iter()
+        .map(|v| {
+            let points = surface.u_line(v, LINE_POINTS);
+            let normals = points.iter().map(|p| BraunerSurface::parameters_of(p.x, p.y).map_or(Vec3::z(), |(u, v)| surface.normal(u, v))).collect();
+            LevelCurve { level: v, points, normals, closed: false, singular_vertices: Vec::new() }
         })
         .collect();
     let slopes: Vec<Value> = lines.iter().map(|l| json!({ "v": l.level, "slope_degrees": brauner_slope_degrees(surface.mu, l.level) })).collect();
