@@ -2,8 +2,9 @@
 //! 1. binormal strip: rounds of (project onto the surface, freeze normals and side vectors, run
 //!    Levenberg–Marquardt on Eq. 8–9 with surface proximity and fairness);
 //! 2. rectifying strip: rulings initialised in the outer bisecting planes from the version-1 model
-//!    (Fig. 19), then Levenberg–Marquardt on Eq. 16–17 with the fairness regulariser and a ruling
-//!    anchor, and a final round with both at weight 0;
+//!    (Fig. 19), then Levenberg–Marquardt on Eq. 16–17 with Eq. 8 on the quad normals, the
+//!    fairness regulariser and a ruling anchor, and a final round with both at weight 0 (the
+//!    surface normals refreshed halfway);
 //! 3. boundaries at the requested width, flat unrolling, Table 4 metrics and warnings.
 
 use rayon::prelude::*;
@@ -203,6 +204,14 @@ impl<'a> StripOptimiser<'a> {
             frozen.normals.push(surface.normal);
             frozen.anchors.push(surface.point);
         }
+        frozen.quad_normals.clear();
+        frozen.quad_sides.clear();
+        for (j, e) in unit_edges(&points).iter().enumerate() {
+            let normal = (frozen.normals[j] + frozen.normals[j + 1]).try_normalize(0.0).unwrap_or(frozen.normals[j]);
+            let side = normal.cross(e).try_normalize(0.0).unwrap_or(frozen.sides[j]);
+            frozen.quad_normals.push(normal);
+            frozen.quad_sides.push(side);
+        }
     }
 
     /// Up to `iterations` Levenberg–Marquardt iterations with the current weights.
@@ -228,9 +237,14 @@ impl<'a> StripOptimiser<'a> {
         self.initialise_rulings();
         self.problem.weights = params.weights;
         self.iterate(params.iterations_per_round)?;
-        self.refresh();
         self.problem.weights = StripWeights { fair: 0.0, ruling_anchor: 0.0, ..params.weights };
-        self.iterate(params.final_iterations)?;
+        // The final round in two halves, the surface normals the quads are held to refreshed
+        // before each: the centre line moves in it, most in the first half.
+        let first = params.final_iterations / 2;
+        for iterations in [first, params.final_iterations - first] {
+            self.refresh();
+            self.iterate(iterations)?;
+        }
         self.polish(params)
     }
 

@@ -7,7 +7,19 @@
 //! not separate variables: they enter as functions of the positions with exact derivatives, which
 //! satisfies the first two constraints of Eq. 16 exactly; `d_i ⟂ n_i^p` is written as
 //! `d_i·(ê_i − ê_{i−1}) = 0`, whose value directly measures the defect of the angle sum
-//! `α_i⁻ + α_i⁺ − π` that bends the unrolled strip.
+//! `α_i⁻ + α_i⁺ − π` that bends the unrolled strip. The unrolling adds these defects up along the
+//! whole strip, so this row is weighted [`STRAIGHTNESS_SCALE`] times the other planarity rows.
+//!
+//! A planar block also holds the quad to the angle: Eq. 8 on the quad normal `N_{j,j+1}`, the
+//! discrete principal normal of the edge, which makes the angle 90° − θ with the surface normal on
+//! a P-curve (`N = sin θ n̄ − cos θ ū` up to sign, with `ū = n̄ × ê`):
+//! `(N·n̄)² − sin²θ` and `(N·n̄)(N·ū) + sin θ cos θ`. Eq. 8 at the vertices holds the binormals
+//! `b_i`, but where the centre line is nearly straight its discrete osculating planes, and with
+//! them the rectifying planes `R_i` the rulings lie in, turn by degrees for displacements of a
+//! thousandth of an edge; these rows keep the quads, which are what is built, at θ there.
+//! Freed that way, neighbouring rulings could lean to opposite sides of the centre line (a quad
+//! crossed like a bow tie, d_j·d_{j+1} < 0); a hinge row `max(0, cos β_max − d̂_j·d̂_{j+1})` bounds
+//! their turn ([`MAX_RULING_TURN_DEGREES`]).
 //!
 //! A ruling block also bounds the ruling's angle to the centre line from below
 //! ([`MIN_RULING_ANGLE_DEGREES`]): a hinge row `max(0, (d̂·t̂)² − cos²α_min)` with `t̂` the unit
@@ -22,7 +34,7 @@ use crate::solver::LeastSquaresProblem;
 
 /// Variables per vertex: `c`, `b`, `d`.
 const PER_VERTEX: usize = 9;
-/// Rows of each block kind.
+/// Rows of each block kind (planar: Eq. 17, Eq. 8 on the quad normal, the ruling-turn hinge).
 const CURVE_ROWS: usize = 5;
 const FAIR_ROWS: usize = 3;
 const SURFACE_ROWS: usize = 4;
@@ -36,7 +48,15 @@ const RULING_ROWS: usize = 6;
 /// to a boundary within `1 / (2 sin 20°) ≈ 1.46` strip widths; the strip then gives up a little
 /// of its angle or bends its centre line there, which the verdict measures.
 pub(crate) const MIN_RULING_ANGLE_DEGREES: f64 = 20.0;
-const PLANAR_ROWS: usize = 4;
+/// Largest turn between the rulings of one quad (degrees); see the module notes.
+const MAX_RULING_TURN_DEGREES: f64 = 60.0;
+/// Factor on `√λ_planarity` of the angle-sum row `d_i·(ê_i − ê_{i−1})`: Table 4's `e_straight`
+/// is the sum of these defects along a strip of some fifty vertices, weighed against single-quad
+/// residuals (planarity, angle), so it is held ten times tighter (a hundred times in energy).
+/// Measured on the paper's Wave mesh (θ = 60°), at factor 1 the worst strip's unrolling strays by
+/// 6e-4 of its length, at 10 by 4e-6.
+const STRAIGHTNESS_SCALE: f64 = 10.0;
+const PLANAR_ROWS: usize = 7;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Block {
@@ -58,6 +78,10 @@ pub(crate) struct Frozen {
     pub anchors: Vec<Vec3>,
     /// Initial rulings (the version-1 model).
     pub rulings: Vec<Vec3>,
+    /// Per edge `j`: unit surface normal `n̄_j` of the quad (the normalised sum of the normals at
+    /// its two centre vertices) and side vector `ū_j = n̄_j × ê_j`.
+    pub quad_normals: Vec<Vec3>,
+    pub quad_sides: Vec<Vec3>,
 }
 
 /// The strip problem of one open polyline with `n ≥ 3` vertices.
@@ -255,6 +279,7 @@ impl LeastSquaresProblem for StripProblem {
                 let (s_planar, s_anchor) = (w.planarity.sqrt(), w.ruling_anchor.sqrt());
                 let d = vec3(x, ruling(i));
                 if i > 0 && i < last {
+                    let s_planar = s_planar * STRAIGHTNESS_SCALE;
                     let (before, partial_before) = unit_and_partial(c(i - 1), c(i), &d);
                     let (after, partial_after) = unit_and_partial(c(i), c(i + 1), &d);
                     r[0] = s_planar * d.dot(&(after - before));
@@ -307,6 +332,28 @@ impl LeastSquaresProblem for StripProblem {
                 jac.add(2, position(j), -partial * s);
                 r[3] = s * (nv.dot(&nv) - 1.0);
                 jac.add(3, normal, nv * (2.0 * s));
+                // Eq. 8 on the quad normal, weighted √(λ_angle λ_planarity): it exists only while
+                // the rulings are solved for, and the polish (angle weight 0) leaves it out.
+                let s_angle = (w.angle * w.planarity).sqrt();
+                if let (Some(n), Some(u)) = (self.frozen.quad_normals.get(j), self.frozen.quad_sides.get(j)) {
+                    let (nn, nu) = (nv.dot(n), nv.dot(u));
+                    r[4] = s_angle * (nn * nn - self.sin * self.sin);
+                    r[5] = s_angle * (nn * nu + self.sin * self.cos);
+                    jac.add(4, normal, n * (2.0 * s_angle * nn));
+                    jac.add(5, normal, (n * nu + u * nn) * s_angle);
+                }
+                // Hinge on the turn between consecutive rulings.
+                let (n0, n1) = (d0.norm(), d1.norm());
+                if n0 > 0.0 && n1 > 0.0 {
+                    let (u0, u1) = (d0 / n0, d1 / n1);
+                    let cosine = u0.dot(&u1);
+                    let bound = MAX_RULING_TURN_DEGREES.to_radians().cos();
+                    if cosine < bound {
+                        r[6] = s * (bound - cosine);
+                        jac.add(6, ruling(j), -(u1 - u0 * cosine) * (s / n0));
+                        jac.add(6, ruling(j + 1), -(u0 - u1 * cosine) * (s / n1));
+                    }
+                }
             }
         }
     }
@@ -338,6 +385,8 @@ mod tests {
             sides: (0..n).map(|i| unit(10 * i + 3)).collect(),
             anchors: (0..n).map(|i| Vec3::new(i as f64, 0.1, 0.2)).collect(),
             rulings: (0..n).map(|i| unit(10 * i + 6)).collect(),
+            quad_normals: (0..n - 1).map(|j| unit(10 * j + 1)).collect(),
+            quad_sides: (0..n - 1).map(|j| unit(10 * j + 4)).collect(),
         };
         for b in 0..problem.block_count() {
             let error = check_block_jacobian(&problem, &x, b, 1e-6);

@@ -94,9 +94,10 @@ fn design_traces_its_own_guides_or_follows_strokes() {
     let obj = small_roof(&dir, 400);
     let m = obj.to_str().expect("utf-8");
     // Guides from this side of the coarse roof lead to a family with straight stretches (about a
-    // fifth of the level curves), where no developable strip keeps 60°: the design writes its
-    // outputs and says so, exit 3, in one line naming the strips and the worst point.
-    let design = ["design", "--mesh", m, "--guides", "3", "--guide-side", "0", "--guide-angle", "60", "--strips", "6", "--out", "d", "-q"];
+    // fifth of the level curves), where the strips' quads keep 60° only to about half a degree;
+    // asked for 0.25°, the design writes its outputs and says so, exit 3, in one line naming the
+    // strips and the worst point.
+    let design = ["design", "--mesh", m, "--guides", "3", "--guide-side", "0", "--guide-angle", "60", "--strips", "6", "--tolerance", "0.25", "--out", "d", "-q"];
     let output = lamella(&dir.0, &design);
     assert_eq!(output.status.code(), Some(3), "{}", stderr(&output));
     let message = stderr(&output);
@@ -108,7 +109,14 @@ fn design_traces_its_own_guides_or_follows_strokes() {
     assert!(report["parameters"]["start"]["gradient_target"].is_null(), "the target is the solver's, not a start key");
     assert_eq!(report["strips"]["acceptable"], false);
     let worst = report["strips"]["verdict"]["worst"]["error_degrees"].as_f64().expect("worst error");
-    assert!(worst > 2.0, "the verdict's worst quad is {worst}° off");
+    assert!(worst > 0.25, "the verdict's worst quad is {worst}° off");
+    // Yet within the default 2° with Table 4 quality: the quads are held to θ where the centre
+    // line barely bends (their strip planes were 5.2° off before that).
+    let overall = &report["strips"]["overall"];
+    let metric = |name: &str| overall[name].as_f64().unwrap_or(f64::NAN);
+    assert!(worst <= 1.0, "the verdict's worst quad is {worst}° off");
+    assert!(metric("max_e_straight") <= 5e-4 && metric("max_planar") <= 1.2e-4 && metric("appro_percent") <= 0.2, "{overall}");
+    assert_eq!(overall["flipped_quads"].as_u64(), Some(0));
     assert!(dir.path("d/strips.obj").is_file() && dir.path("d/unrolled.svg").is_file(), "the outputs are written");
 
     // Strokes drawn along P-curves of 60° (the traced guides' points): θ is estimated from them.
