@@ -351,11 +351,15 @@ typedef struct LmlCandidate {
 // each residual is multiplied by √λ. Lengths inside them are in units of a polyline's mean
 // edge length, so the defaults suit any scale.
 typedef struct LmlStripWeights {
-  // Eq. 8 on polyline vertices: the binormal keeps the angle θ to the surface normal.
+  // Eq. 8 on polyline vertices: the binormal keeps the angle θ to the surface normal; with the
+  // planarity weight (√(angle × planarity)), Eq. 8 on the quad normals too, so that the quads
+  // themselves keep 90° − θ to the surface normal.
   double angle;
   // Eq. 9 on polyline vertices: the binormal is a unit vector orthogonal to both edges.
   double binormal;
-  // Distance of the polyline vertices from the surface.
+  // Distance of the polyline vertices from the surface (default 0.01: the centre line may leave
+  // the surface a little where θ, planar quads and a straight unrolling cannot all hold on it;
+  // `Appro` of the metrics says by how much).
   double surface;
   // Tangential drift of the vertices along the surface.
   double slide;

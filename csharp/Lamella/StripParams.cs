@@ -7,11 +7,11 @@ namespace Lamella
     [StructLayout(LayoutKind.Sequential)]
     public struct StripWeights
     {
-        /// <summary>Eq. 8 on polyline vertices.</summary>
+        /// <summary>Eq. 8 on polyline vertices, and (weighted with Planarity) on the quad normals.</summary>
         public double Angle;
         /// <summary>Eq. 9 on polyline vertices.</summary>
         public double Binormal;
-        /// <summary>Distance of the polyline vertices from the surface.</summary>
+        /// <summary>Distance of the polyline vertices from the surface (default 0.01; Appro reports the distance kept).</summary>
         public double Surface;
         /// <summary>Tangential drift along the surface.</summary>
         public double Slide;

@@ -12,11 +12,15 @@ use crate::strips::{StripParams, StripWeights};
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LmlStripWeights {
-    /// Eq. 8 on polyline vertices: the binormal keeps the angle θ to the surface normal.
+    /// Eq. 8 on polyline vertices: the binormal keeps the angle θ to the surface normal; with the
+    /// planarity weight (√(angle × planarity)), Eq. 8 on the quad normals too, so that the quads
+    /// themselves keep 90° − θ to the surface normal.
     pub angle: f64,
     /// Eq. 9 on polyline vertices: the binormal is a unit vector orthogonal to both edges.
     pub binormal: f64,
-    /// Distance of the polyline vertices from the surface.
+    /// Distance of the polyline vertices from the surface (default 0.01: the centre line may leave
+    /// the surface a little where θ, planar quads and a straight unrolling cannot all hold on it;
+    /// `Appro` of the metrics says by how much).
     pub surface: f64,
     /// Tangential drift of the vertices along the surface.
     pub slide: f64,
