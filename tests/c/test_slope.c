@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define PI 3.14159265358979323846
 #define SLOPE 30.0
@@ -110,6 +111,7 @@ static void helices(const LmlMesh *mesh, const Cylinder *c)
     size_t needed = 0, count = 0, *offsets = NULL, i, k, measured = 0;
     double *start = malloc(c->vertex_count * sizeof(double)), *points, worst = 0.0, reached = 0.0;
 
+    memset(&report, 0, sizeof report);
     if (start == NULL) {
         CHECK(!"out of memory");
         return;
