@@ -13,7 +13,8 @@
 //! array outputs, and the initialisation of Sec. 3.2.2: boundary start points, traced guide
 //! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes; and nets of two
 //! families ([`LmlNet`], paper Sec. 4.1) with their quad net and nodes ([`LmlStripNet`]); surface optimisation ([`LmlReshape`], Sec. 3.3);
-//! and the interactive 3D viewer page of strips (`lml_strips_view_html`).
+//! shading designs ([`LmlShading`], Sec. 6: site, labels, strips with one θ per curve, the
+//! sun-path check); and the interactive 3D viewer page of strips (`lml_strips_view_html`).
 //!
 //! The header is generated from this module by cbindgen (configuration in `cbindgen.toml`);
 //! `tests/ffi_header.rs` fails when the committed header is stale and rewrites it when
@@ -53,6 +54,7 @@ mod net;
 mod strip_net;
 mod view;
 mod reshape;
+mod shading;
 
 pub use boundary_starts::*;
 pub use curves::*;
@@ -69,6 +71,7 @@ pub use mesh::*;
 pub use net::*;
 pub use report::*;
 pub use reshape::*;
+pub use shading::*;
 pub use search::*;
 pub use session::*;
 pub use status::*;
@@ -94,5 +97,6 @@ mod tests {
         movable::<LmlStrips>();
         movable::<LmlGuides>();
         movable::<LmlFabrication>();
+        movable::<LmlShading>();
     }
 }

@@ -27,6 +27,7 @@ int main(int argc, char **argv)
     test_search(&small);
     test_net(&small);
     test_reshape(&small);
+    test_shading();
     field = test_solve(&cylinder);
     CHECK(field != NULL);
     if (field != NULL) {

@@ -54,4 +54,9 @@ void test_net(const Cylinder *cylinder);
 /* Surface optimisation (Sec. 3.3) of the cylinder towards 45 degrees within an absolute tolerance:
  * every invalid input, stepping, positions and deviations against the distance from the axis. */
 void test_reshape(const Cylinder *cylinder);
+
+/* Shading designs (Sec. 6) on a small vertical facade: every invalid input, stepping, strips
+ * with one theta per curve against the noon sun's elevation, the sun-path check's blocked
+ * fraction, and the strips' verdict status on a twisted facade. */
+void test_shading(void);
 #endif

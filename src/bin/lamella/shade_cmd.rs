@@ -20,10 +20,9 @@ use crate::svg::sunpath::sunpath_svg;
 use lamella::curves::uniform_levels;
 use lamella::input::clip;
 use lamella::mesh::TriMesh;
-use lamella::strips::Verdict;
 use lamella::shading::{
     default_start, most_common_slope, shading_strips, sun_path_check, with_transition_ring, Clock, DateRange, HourRange,
-    LightRegion, MonthDay, ShadingParams, ShadingSolver, ShadingWeights, Site, StartKind, SunPathEvaluation, SunSample, VertexLabel,
+    LightRegion, MonthDay, ShadingParams, ShadingSolver, ShadingStrips, ShadingWeights, Site, StartKind, SunPathEvaluation, SunSample, VertexLabel,
 };
 use serde_json::{json, Value};
 use std::path::PathBuf;
@@ -174,7 +173,7 @@ pub fn run(args: &ShadeArgs) -> CliResult<()> {
     out.write("unrolled.svg", cut_sheet_svg(&pieces))?;
     out.write("shading.svg", shading_svg(&mesh, fractions, &strips.pattern, &frame, block_suns))?;
     out.write("sunpath.svg", sunpath_svg(&frame, block_suns, &block_eval.sun_fractions, &block_region))?;
-    let verdict = verdict(args, block_fraction, pass_fraction, &strips.pattern.verdict);
+    let verdict = verdict(args, block_fraction, pass_fraction, &strips);
     let report = json!({
         "input": name,
         "site": {
@@ -192,7 +191,7 @@ pub fn run(args: &ShadeArgs) -> CliResult<()> {
             "count": strips.pattern.strips.len(), "curves": strips.curves.len(), "width_m": number(width), "spacing_m": number(spacing),
             "theta_degrees": strips.thetas.iter().map(|t| t.map_or(Value::Null, number)).collect::<Vec<_>>(),
             "max_strip_plane_angle_error_degrees": number(strips.pattern.metrics.max_quad_angle_error_degrees),
-            "verdict": strips_verdict_json(&strips.pattern.verdict),
+            "verdict": strips_verdict_json(&strips),
         },
         "sun_path": {
             "sample_offset_m": number(offset),
@@ -258,9 +257,9 @@ fn curve_spacing(mesh: &TriMesh, field: &[f64], count: usize) -> CliResult<f64> 
 }
 
 /// The verdict of the sun-path check and of the strips (each quad against its own curve's θ).
-fn verdict(args: &ShadeArgs, block: Option<f64>, pass: Option<f64>, strips: &Verdict) -> Result<(), String> {
+fn verdict(args: &ShadeArgs, block: Option<f64>, pass: Option<f64>, strips: &ShadingStrips) -> Result<(), String> {
     let mut misses = Vec::new();
-    if let Some(miss) = strips_miss(strips) {
+    if let Some(miss) = strips.miss() {
         misses.push(miss);
     }
     if let Some(b) = block.filter(|&b| b < args.min_blocked) {
@@ -272,37 +271,13 @@ fn verdict(args: &ShadeArgs, block: Option<f64>, pass: Option<f64>, strips: &Ver
     if misses.is_empty() { Ok(()) } else { Err(format!("no acceptable shading: {}", misses.join("; "))) }
 }
 
-/// What the strips miss, `None` when they are acceptable: how many miss their curve's θ or have
-/// flipped quads, and the worst quad.
-fn strips_miss(verdict: &Verdict) -> Option<String> {
-    if verdict.is_acceptable() {
-        return None;
-    }
-    if verdict.empty {
-        return Some("no strip could be built".to_string());
-    }
-    let mut parts = Vec::new();
-    if !verdict.strips_missing_theta.is_empty() {
-        let n = verdict.strips_missing_theta.len();
-        let (noun, verb) = if n == 1 { ("strip", "misses its") } else { ("strips", "miss their") };
-        parts.push(format!("{n} {noun} {verb} curve's θ by more than {}°", verdict.tolerance_degrees));
-    }
-    if !verdict.strips_with_flipped_quads.is_empty() {
-        let n = verdict.strips_with_flipped_quads.len();
-        parts.push(format!("{n} {}", if n == 1 { "strip has flipped quads" } else { "strips have flipped quads" }));
-    }
-    let worst = verdict.worst.map_or(String::new(), |w| {
-        format!(" (worst: strip {} quad {} at ({:.3}, {:.3}, {:.3}), {:.2}° off)", w.strip, w.quad, w.point[0], w.point[1], w.point[2], w.error_degrees)
-    });
-    Some(format!("{}{worst}", parts.join(", ")))
-}
-
 /// The strips' verdict in report.json.
-fn strips_verdict_json(verdict: &Verdict) -> Value {
+fn strips_verdict_json(strips: &ShadingStrips) -> Value {
+    let verdict = &strips.pattern.verdict;
     let mut value = serde_json::to_value(verdict).unwrap_or(Value::Null);
     if let Some(object) = value.as_object_mut() {
         object.insert("acceptable".into(), json!(verdict.is_acceptable()));
-        object.insert("message".into(), strips_miss(verdict).map_or(Value::Null, Value::String));
+        object.insert("message".into(), strips.miss().map_or(Value::Null, Value::String));
     }
     value
 }
