@@ -139,6 +139,24 @@ namespace Lamella.Tests
         }
 
         [Test]
+        public void SiteTextsParseAsTheCliFlags()
+        {
+            ShadingSite parsed = ShadingSite.Default().WithDates("06-14..06-28").WithHours("11.5..12.5");
+            ShadingSite built = Noon();
+            Assert.AreEqual(new uint[] { 6, 14, 6, 28 }, new[] { parsed.FirstMonth, parsed.FirstDay, parsed.LastMonth, parsed.LastDay });
+            Assert.AreEqual(new[] { built.FirstHour, built.LastHour, built.PassFirstHour, built.PassLastHour },
+                new[] { parsed.FirstHour, parsed.LastHour, parsed.PassFirstHour, parsed.PassLastHour });
+            Assert.Throws<FormatException>(() => ShadingSite.Default().WithDates("June"));
+            Assert.Throws<FormatException>(() => ShadingSite.Default().WithHours("10..noon"));
+            // Blocked fractions are coloured over the fixed range [0, 1]: the ramp's ends, clamped, grey for none.
+            int[] colours = Conversion.FieldColours.Argb(new[] { 0.0, 1.0, 1.5, double.NaN }, 0.0, 1.0);
+            Assert.AreEqual(unchecked((int)0xFF313695), colours[0]);
+            Assert.AreEqual(unchecked((int)0xFFA50026), colours[1]);
+            Assert.AreEqual(colours[1], colours[2]);
+            Assert.AreEqual(Conversion.FieldColours.Missing, colours[3]);
+        }
+
+        [Test]
         public void InvalidArgumentsAreRefusedByName()
         {
             using (var mesh = Facade(0.0))

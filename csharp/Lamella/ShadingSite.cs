@@ -76,6 +76,45 @@ namespace Lamella
             return site;
         }
 
+        /// <summary>The dates from text <c>MM-DD..MM-DD</c> (as the CLI's <c>--dates</c>).</summary>
+        /// <exception cref="FormatException">Not of that form (the text is quoted).</exception>
+        public ShadingSite WithDates(string text)
+        {
+            string[] ends = SplitRange(text);
+            int[] first = MonthDay(ends[0], text), last = MonthDay(ends[1], text);
+            return WithDates(first[0], first[1], last[0], last[1]);
+        }
+
+        /// <summary>The daily hours from text <c>H..H</c> (decimal hours, as the CLI's <c>--hours</c>), for blocking and letting through.</summary>
+        /// <exception cref="FormatException">Not of that form (the text is quoted).</exception>
+        public ShadingSite WithHours(string text)
+        {
+            string[] ends = SplitRange(text);
+            double first, last;
+            var style = System.Globalization.NumberStyles.Float;
+            var culture = System.Globalization.CultureInfo.InvariantCulture;
+            if (!double.TryParse(ends[0].Trim(), style, culture, out first) || !double.TryParse(ends[1].Trim(), style, culture, out last))
+                throw new FormatException("hours '" + text + "' are not H..H");
+            return WithHours(first, last);
+        }
+
+        private static string[] SplitRange(string text)
+        {
+            if (text == null) throw new ArgumentNullException(nameof(text));
+            int at = text.IndexOf("..", StringComparison.Ordinal);
+            if (at < 0) throw new FormatException("'" + text + "' is not a range A..B");
+            return new[] { text.Substring(0, at), text.Substring(at + 2) };
+        }
+
+        private static int[] MonthDay(string part, string text)
+        {
+            string[] pieces = part.Trim().Split('-');
+            int month, day;
+            if (pieces.Length != 2 || !int.TryParse(pieces[0], out month) || !int.TryParse(pieces[1], out day) || month < 0 || day < 0)
+                throw new FormatException("dates '" + text + "' are not MM-DD..MM-DD");
+            return new[] { month, day };
+        }
+
         /// <summary>The same daily hours for blocking and letting through.</summary>
         public ShadingSite WithHours(double first, double last)
         {
