@@ -712,6 +712,11 @@ typedef struct LmlShadingReport {
   uint64_t block_vertices;
   uint64_t pass_vertices;
   uint64_t singular_vertices;
+  // 1 when the start was the constant-slope family of the slope vote (Fig. 34–35), 0 when it
+  // was a height field (no usable vote, or no blocking vertex).
+  uint64_t constant_slope_start;
+  // The slope of that family against the earth axis in degrees (0 for a height field).
+  double start_slope_degrees;
   // `E_fair`, `E_grad`, `E_block` (Eq. 26), `E_light` (Eq. 27), the constraints, and the
   // weighted total minimised (Eq. 25).
   double energy_fair;
@@ -1897,8 +1902,10 @@ LmlStatus lml_reshape_deviations(const struct LmlReshape *reshape,
 LmlStatus lml_shading_site_default(struct LmlShadingSite *out);
 
 // Starts a shading design on `mesh` for `site` (Table 2 weights: blocking ones when some vertex
-// blocks), from the paper's planar start: the height along the earth axis when some vertex
-// blocks, else the height across the central light of the pass region.
+// blocks), from the paper's start (Sec. 6, Fig. 34–35): when some vertex blocks, the
+// constant-slope family about the earth axis of the slope most faces vote for (the height along
+// the earth axis when no face votes or none is steep enough for it; `LmlShadingReport` says
+// which), else the height across the central light of the pass region.
 //
 // - `mesh`: the surface (copied).
 // - `site`: the site, dates and hours (copied); the block region `R_l` comes from the dates and

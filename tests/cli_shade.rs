@@ -19,6 +19,9 @@ fn facade(dir: &Scratch, twist: f64) -> TriMesh {
     mesh
 }
 
+/// The earth axis at latitude 47.4° with north +y and up +z: (0, cos 47.4°, sin 47.4°).
+const EARTH_AXIS: &str = "0,0.676876,0.736097";
+
 /// The noon site's arguments with some flags' values replaced and `extra` appended.
 fn noon<'a>(replace: &[(&str, &'a str)], extra: &[&'a str]) -> Vec<&'a str> {
     let base = [("--mesh", "facade.obj"), ("--latitude", "47.4"), ("--north", "0,1,0"), ("--dates", "06-14..06-28"), ("--hours", "11.5..12.5")];
@@ -64,6 +67,13 @@ fn shade_blocks_the_noon_sun_on_a_facade_and_says_so_in_its_files() {
     let suns = report["sun_path"]["block_suns"].as_u64().expect("suns") as usize;
     assert_eq!(circles.len(), suns + 3, "one dot per sun and three elevation circles");
     assert_eq!(suns, 15 * 2, "15 days × the hours 11.5 and 12.5");
+    // The default start: the constant-slope family (Fig. 34–35) of the voted slope, which on a
+    // vertical south facade near noon is 0 (horizontal tangents orthogonal to the sun) up to
+    // half a 5° bin.
+    assert_eq!(report["start"]["kind"], "constant slope about the earth axis", "{}", report["start"]);
+    let slope = report["start"]["slope_degrees"].as_f64().expect("slope");
+    assert!(slope.abs() <= 2.5, "slope {slope}");
+    assert_eq!(report["constant_slope_vote"]["used"], true);
     // The strips' verdict: every quad within the default 2° of its curve's θ, measured from
     // strips.obj on the facade's exact normal.
     assert_eq!(report["strips"]["verdict"]["acceptable"], true, "{}", report["strips"]["verdict"]);
@@ -107,11 +117,12 @@ fn worst_quad_off_theta(strips_obj: &std::path::Path, report: &serde_json::Value
 
 #[test]
 fn shade_exits_3_when_the_strips_miss_their_curves_theta_though_the_sun_is_blocked() {
-    // Twisted, the facade's level curves are no P-curves of one angle: their strips miss the
-    // rectifying planes by degrees, while the noon sun is still blocked.
+    // Twisted, the facade's level curves from the paper's planar start (height along the earth
+    // axis) are no P-curves of one angle: their strips miss the rectifying planes by degrees,
+    // while the noon sun is still blocked.
     let dir = Scratch::new("shade-twisted");
     facade(&dir, 0.08);
-    let args = noon(&[], &["--strips", "10", "--out", "d"]);
+    let args = noon(&[], &["--strips", "10", "--start-direction", EARTH_AXIS, "--out", "d"]);
     let output = lamella(&dir.0, &args);
     assert_eq!(output.status.code(), Some(3), "{}", stderr(&output));
     let message = stderr(&output);
@@ -132,7 +143,7 @@ fn shade_exits_3_when_the_strips_miss_their_curves_theta_though_the_sun_is_block
     // flipped quads the verdict also counts still fail it.
     let reported = verdict["worst"]["error_degrees"].as_f64().expect("worst error");
     let loose = format!("{}", reported.ceil() + 1.0);
-    let output = lamella(&dir.0, &noon(&[], &["--strips", "10", "--tolerance", &loose, "--out", "e"]));
+    let output = lamella(&dir.0, &noon(&[], &["--strips", "10", "--start-direction", EARTH_AXIS, "--tolerance", &loose, "--out", "e"]));
     let loose_verdict = &read_json(&dir.path("e/report.json"))["strips"]["verdict"];
     assert_eq!(loose_verdict["strips_missing_theta"].as_array().map(Vec::len), Some(0), "{loose_verdict}");
     let flipped = loose_verdict["strips_with_flipped_quads"].as_array().map_or(0, Vec::len);

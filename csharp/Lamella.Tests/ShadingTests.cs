@@ -78,6 +78,10 @@ namespace Lamella.Tests
                 Assert.Greater(report.Iterations, 0);
                 Assert.AreEqual(Vertices - 4 * Cells, report.BlockVertices, "the interior vertices block");
                 Assert.AreEqual(0, report.PassVertices);
+                // The slope vote on a vertical south facade near noon: tangents orthogonal to the sun are horizontal,
+                // slope 0 up to half a 5° bin.
+                Assert.IsTrue(report.StartSlopeDegrees.HasValue);
+                Assert.LessOrEqual(Math.Abs(report.StartSlopeDegrees.Value), 2.5);
                 Assert.AreEqual(Vertices, shading.Field().Length);
                 Assert.IsTrue(strips.Verdict.IsAcceptable, strips.Verdict.Message);
                 double[] thetas = shading.Thetas();

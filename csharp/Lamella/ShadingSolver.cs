@@ -13,6 +13,7 @@ namespace Lamella
             BlockVertices = checked((long)r.BlockVertices);
             PassVertices = checked((long)r.PassVertices);
             SingularVertices = checked((long)r.SingularVertices);
+            StartSlopeDegrees = r.ConstantSlopeStart != 0 ? (double?)r.StartSlopeDegrees : null;
             EnergyFair = r.EnergyFair;
             EnergyGrad = r.EnergyGrad;
             EnergyBlock = r.EnergyBlock;
@@ -31,6 +32,8 @@ namespace Lamella
         public long PassVertices { get; }
         /// <summary>Light vertices where the level curve is not regular.</summary>
         public long SingularVertices { get; }
+        /// <summary>The slope (degrees, against the earth axis) of the constant-slope family the field started from (paper Fig. 34–35), or null for a height-field start.</summary>
+        public double? StartSlopeDegrees { get; }
         /// <summary>E_fair.</summary>
         public double EnergyFair { get; }
         /// <summary>E_grad.</summary>

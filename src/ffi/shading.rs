@@ -13,7 +13,7 @@ use super::strips::LmlStrips;
 use crate::mesh::{TriMesh, Vec3};
 use crate::shading::{
     default_start, shading_strips, sun_path_check, with_transition_ring, Clock, DateRange, HourRange, LightRegion, MonthDay, ShadingError, ShadingParams,
-    ShadingReport, ShadingSolver, ShadingWeights, Site, VertexLabel,
+    ShadingReport, ShadingSolver, ShadingWeights, Site, StartKind, VertexLabel,
 };
 
 /// A vertex label (`labels` of `lml_shading_new`).
@@ -95,6 +95,11 @@ pub struct LmlShadingReport {
     pub block_vertices: u64,
     pub pass_vertices: u64,
     pub singular_vertices: u64,
+    /// 1 when the start was the constant-slope family of the slope vote (Fig. 34–35), 0 when it
+    /// was a height field (no usable vote, or no blocking vertex).
+    pub constant_slope_start: u64,
+    /// The slope of that family against the earth axis in degrees (0 for a height field).
+    pub start_slope_degrees: f64,
     /// `E_fair`, `E_grad`, `E_block` (Eq. 26), `E_light` (Eq. 27), the constraints, and the
     /// weighted total minimised (Eq. 25).
     pub energy_fair: f64,
@@ -105,10 +110,16 @@ pub struct LmlShadingReport {
     pub energy_total: f64,
 }
 
-impl From<&ShadingReport> for LmlShadingReport {
-    fn from(r: &ShadingReport) -> LmlShadingReport {
+impl LmlShadingReport {
+    fn of(r: &ShadingReport, start: StartKind) -> LmlShadingReport {
         let e = &r.energies;
+        let slope = match start {
+            StartKind::ConstantSlope { slope_degrees } => Some(slope_degrees),
+            StartKind::EarthAxisHeight | StartKind::AcrossCentralLight => None,
+        };
         LmlShadingReport {
+            constant_slope_start: u64::from(slope.is_some()),
+            start_slope_degrees: slope.unwrap_or(0.0),
             iterations: r.iterations as u64,
             converged: u64::from(r.converged),
             block_vertices: r.block_vertices as u64,
@@ -146,6 +157,7 @@ pub struct LmlSunPathSummary {
 /// Create it with `lml_shading_new`, release it with `lml_shading_free`.
 pub struct LmlShading {
     solver: ShadingSolver,
+    start: StartKind,
     mesh: TriMesh,
     sites: (Site, Site),
     /// θ of every strip of the last `lml_shading_strips`, in strip order.
@@ -194,8 +206,10 @@ pub unsafe extern "C" fn lml_shading_site_default(out: *mut LmlShadingSite) -> L
 }
 
 /// Starts a shading design on `mesh` for `site` (Table 2 weights: blocking ones when some vertex
-/// blocks), from the paper's planar start: the height along the earth axis when some vertex
-/// blocks, else the height across the central light of the pass region.
+/// blocks), from the paper's start (Sec. 6, Fig. 34–35): when some vertex blocks, the
+/// constant-slope family about the earth axis of the slope most faces vote for (the height along
+/// the earth axis when no face votes or none is steep enough for it; `LmlShadingReport` says
+/// which), else the height across the central light of the pass region.
 ///
 /// - `mesh`: the surface (copied).
 /// - `site`: the site, dates and hours (copied); the block region `R_l` comes from the dates and
@@ -248,9 +262,9 @@ pub unsafe extern "C" fn lml_shading_new(
         let pass_region = LightRegion::of_site(&pass_site)?;
         let labels = with_transition_ring(&mesh.mesh, &labels, ring as usize)?;
         let params = ShadingParams { pass_region, weights: ShadingWeights::for_labels(&labels), ..ShadingParams::new(frame, block_region) };
-        let (start, _, _) = default_start(&mesh.mesh, &params, &labels);
-        let solver = ShadingSolver::new(&mesh.mesh, &start, &labels, params)?;
-        out.set_owned(LmlShading { solver, mesh: mesh.mesh.clone(), sites: (block_site, pass_site), thetas: Vec::new(), fractions: Vec::new() });
+        let start = default_start(&mesh.mesh, &params, &labels);
+        let solver = ShadingSolver::new(&mesh.mesh, &start.field, &labels, params)?;
+        out.set_owned(LmlShading { solver, start: start.kind, mesh: mesh.mesh.clone(), sites: (block_site, pass_site), thetas: Vec::new(), fractions: Vec::new() });
         Ok(LmlStatus::Ok)
     })
 }
@@ -278,7 +292,7 @@ pub unsafe extern "C" fn lml_shading_step(shading: *mut LmlShading, max_iteratio
         let report = unsafe { Out::optional(report, "report") }?;
         let step = shading.solver.step(usize::try_from(max_iterations).unwrap_or(usize::MAX))?;
         if let Some(mut report) = report {
-            report.set(LmlShadingReport::from(&step));
+            report.set(LmlShadingReport::of(&step, shading.start));
         }
         Ok(if step.converged { LmlStatus::Converged } else { LmlStatus::More })
     })
@@ -291,7 +305,7 @@ pub unsafe extern "C" fn lml_shading_report(shading: *const LmlShading, report: 
     guarded(|| {
         // SAFETY (both blocks): live handle; writable `report`.
         let shading = unsafe { handle(shading, "shading") }?;
-        unsafe { Out::new(report, "report") }?.set(LmlShadingReport::from(shading.solver.report()));
+        unsafe { Out::new(report, "report") }?.set(LmlShadingReport::of(shading.solver.report(), shading.start));
         Ok(LmlStatus::Ok)
     })
 }

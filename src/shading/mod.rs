@@ -37,6 +37,6 @@ pub use report::{ShadingEnergies, ShadingReport};
 pub use site::{DateRange, HourRange, MonthDay, Site};
 pub use solar_position::{day_of_year, solar_position, Clock, SolarPosition, DAYS_PER_YEAR};
 pub use solver::ShadingSolver;
-pub use start::{default_start, StartKind};
+pub use start::{default_start, ShadingStart, StartKind};
 pub use strips::{shading_strips, ShadingStrips};
 pub use sun_path::{sun_samples, SunSample};

@@ -166,6 +166,9 @@ void test_shading(void)
     }
     CHECK_STATUS(lml_shading_report(shading, &report), LML_STATUS_OK);
     CHECK(report.iterations > 0 && report.block_vertices > 0 && report.pass_vertices == 0);
+    /* The slope vote on a vertical south facade near noon: tangents orthogonal to the sun are
+     * horizontal, slope 0 up to half a 5 degree bin. */
+    CHECK(report.constant_slope_start == 1 && fabs(report.start_slope_degrees) <= 2.5);
     CHECK(isfinite(report.energy_block) && isfinite(report.energy_total));
     CHECK_STATUS(lml_shading_field(shading, NULL, 0, &needed), LML_STATUS_BUFFER_TOO_SMALL);
     CHECK(needed == FACADE_VERTICES);

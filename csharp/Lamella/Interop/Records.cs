@@ -129,6 +129,8 @@ namespace Lamella.Interop
         public ulong BlockVertices;
         public ulong PassVertices;
         public ulong SingularVertices;
+        public ulong ConstantSlopeStart;
+        public double StartSlopeDegrees;
         public double EnergyFair;
         public double EnergyGrad;
         public double EnergyBlock;

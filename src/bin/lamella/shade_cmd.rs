@@ -183,7 +183,7 @@ pub fn run(args: &ShadeArgs) -> CliResult<()> {
         },
         "light_region": { "block": region_json(&block_region), "pass": region_json(&pass_region) },
         "start": start_description,
-        "constant_slope_vote": vote.map(|v| json!({ "slope_degrees": v.slope_degrees, "voting_faces": v.voting_faces, "histogram": v.histogram, "used": false })),
+        "constant_slope_vote": vote.map(|v| json!({ "slope_degrees": v.slope_degrees, "voting_faces": v.voting_faces, "histogram": v.histogram, "used": start_description["kind"] == "constant slope about the earth axis" })),
         "labels": { "block": count(&labels, VertexLabel::Block), "pass": count(&labels, VertexLabel::Pass), "free": count(&labels, VertexLabel::Free), "ring": args.ring },
         "weights": serde_json::to_value(solver.params().weights).unwrap_or(Value::Null),
         "optimisation": serde_json::to_value(solver.report()).unwrap_or(Value::Null),
@@ -227,17 +227,19 @@ fn start_field(mesh: &TriMesh, args: &ShadeArgs, params: &ShadingParams, labels:
     if let Some(path) = &args.start_field {
         return Ok((read_field_for(mesh, path)?, json!({ "kind": "field file", "file": path.display().to_string() })));
     }
-    let (values, direction, kind) = match &args.start_direction {
-        Some(text) => {
-            let direction = parse_vector("--start-direction", text)?;
-            (mesh.positions().iter().map(|p| p.dot(&direction)).collect(), direction, "height along a direction")
-        }
-        None => match default_start(mesh, params, labels) {
-            (values, direction, StartKind::EarthAxisHeight) => (values, direction, "height along the earth axis"),
-            (values, direction, StartKind::AcrossCentralLight) => (values, direction, "height across the central light"),
-        },
+    if let Some(text) = &args.start_direction {
+        let direction = parse_vector("--start-direction", text)?;
+        let values = mesh.positions().iter().map(|p| p.dot(&direction)).collect();
+        return Ok((values, json!({ "kind": "height along a direction", "direction": [direction.x, direction.y, direction.z] })));
+    }
+    let start = default_start(mesh, params, labels);
+    let d = start.direction;
+    let description = match start.kind {
+        StartKind::ConstantSlope { slope_degrees } => json!({ "kind": "constant slope about the earth axis", "slope_degrees": slope_degrees, "axis": [d.x, d.y, d.z] }),
+        StartKind::EarthAxisHeight => json!({ "kind": "height along the earth axis", "direction": [d.x, d.y, d.z] }),
+        StartKind::AcrossCentralLight => json!({ "kind": "height across the central light", "direction": [d.x, d.y, d.z] }),
     };
-    Ok((values, json!({ "kind": kind, "direction": [direction.x, direction.y, direction.z] })))
+    Ok((start.field, description))
 }
 
 /// Mean distance between neighbouring level curves of `count` uniform levels.
