@@ -75,7 +75,7 @@
 // Version of the C ABI described by this header. It changes whenever a function signature,
 // a struct layout or the meaning of a constant changes incompatibly; compare it with
 // `lml_abi_version()` at start-up to detect a header / library mismatch.
-#define LML_ABI_VERSION 1
+#define LML_ABI_VERSION 2
 
 // `LmlCandidate::kind`: the height along `direction` (negated if `negated` is 1).
 #define LML_START_HEIGHT 0
@@ -266,7 +266,9 @@ typedef struct LmlFieldParams {
   // paper Fig. 15), then `weights`; 0: use `weights` from the start. Default 1.
   uint32_t warm_up;
   // Target angle between binormal and surface normal in degrees, in [0, 180]; used by
-  // `LML_FAMILY_PSEUDO_GEODESIC` (θ and 180° − θ are the two mirror families), ignored otherwise.
+  // `LML_FAMILY_PSEUDO_GEODESIC` (θ and 180° − θ are the two mirror families). For
+  // `LML_FAMILY_CONSTANT_SLOPE` and `LML_FAMILY_FREE_SLOPE`: the slope β in (−90, 90).
+  // Ignored by the other families.
   double theta_degrees;
   // The final weights, held until convergence (default: λ_fair 1e-3, λ_grad 1e-5,
   // λ_angle 30, on the normalised problem: the paper's Table 2 with a tenth of its λ_grad).
@@ -277,6 +279,9 @@ typedef struct LmlFieldParams {
   // The final stage has converged when 3 iterations in a row each lower the weighted
   // energy by less than this fraction. Finite, ≥ 0. Default 1e-2.
   double relative_tolerance;
+  // The axis `d` of the constant-slope families (need not be unit; finite, not zero). Default
+  // (0, 0, 1). Ignored by the other families.
+  double slope_axis[3];
 } LmlFieldParams;
 
 // The state of a field optimisation after `lml_field_step` (written by the library; the caller
@@ -752,6 +757,18 @@ typedef struct LmlSunPathSummary {
 // Asymptotic curves, θ = 0° (`E_asy`, paper Eq. 13).
 #define LML_FAMILY_ASYMPTOTIC 2
 
+// Curves of constant slope about `LmlFieldParams.slope_axis` (paper Sec. 5.2.3, Eq. 22): unit
+// tangents `t` with `t·d = sin β`, `β = theta_degrees` in (−90°, 90°) the inclination against the
+// planes orthogonal to the axis `d`. Regions whose tangent planes are too close to orthogonal to
+// `d` carry no slope term (see `lml_curves_new_reachable_boundary`). Start such a field from
+// `lml_field_values_from_slope`; the start search (`lml_search_new`) refuses this family.
+#define LML_FAMILY_CONSTANT_SLOPE 3
+
+// As `LML_FAMILY_CONSTANT_SLOPE`, with the slope β an unknown too, started at `theta_degrees`
+// (paper Sec. 5.2.3: "γ fixed or free"); the report's angles are measured against the slope
+// reached.
+#define LML_FAMILY_FREE_SLOPE 4
+
 // The polyline has fewer than 3 points (the curve was skipped).
 #define LML_STRIP_WARNING_TOO_FEW_POINTS (1 << 0)
 
@@ -905,11 +922,14 @@ LmlStatus lml_mesh_triangles(const struct LmlMesh *mesh,
                              size_t *needed);
 
 // Fills `*out` with the library's defaults for a curve family (see the fields of
-// `LmlFieldParams`). `theta_degrees` is the target angle for `LML_FAMILY_PSEUDO_GEODESIC` and
-// is ignored for the other families (their `theta_degrees` field is set to 90 or 0).
+// `LmlFieldParams`). `theta_degrees` is the target angle for `LML_FAMILY_PSEUDO_GEODESIC`, the
+// slope β for `LML_FAMILY_CONSTANT_SLOPE` and `LML_FAMILY_FREE_SLOPE` (axis (0, 0, 1); change
+// `slope_axis` afterwards), and is ignored for the other families (their `theta_degrees` field
+// is set to 90 or 0).
 //
 // Returns `LML_STATUS_OK`, or `LML_STATUS_INVALID_ARGUMENT` (NULL `out`, unknown family,
-// θ not finite or outside [0, 180]); `*out` is left unchanged on failure.
+// θ not finite or outside [0, 180], a slope not finite or outside (−90, 90)); `*out` is left
+// unchanged on failure.
 LmlStatus lml_field_params_default(LmlFamily family,
                                    double theta_degrees,
                                    struct LmlFieldParams *out);
@@ -1623,6 +1643,52 @@ LmlStatus lml_field_values_from_strokes(const struct LmlMesh *mesh,
                                         size_t capacity,
                                         size_t *needed,
                                         double *theta_degrees);
+
+// Computes the start field of a constant-slope family: a smooth field whose level curves follow,
+// wherever the slope `slope_degrees` is reachable, the tangent directions of that slope about
+// `axis`. Pass it to `lml_field_new` with `LML_FAMILY_CONSTANT_SLOPE` (or `_FREE_SLOPE`) params
+// of the same axis and slope.
+//
+// - `mesh`: the surface.
+// - `axis`: 3 doubles, the axis `d` (need not be unit; finite, not zero).
+// - `slope_degrees`: the slope β in (−90, 90) against the planes orthogonal to `d`.
+// - `out`: one double per vertex; two-call pattern as `lml_field_values_from_guides`
+//   (`*needed` is set to the vertex count; a NULL `out` or a smaller `capacity` copies nothing
+//   and returns `LML_STATUS_BUFFER_TOO_SMALL`). The buffer stays owned by the caller.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_BUFFER_TOO_SMALL`; `LML_STATUS_INVALID_ARGUMENT` (NULL
+// pointer, an axis not finite or zero, a slope out of range, named); `LML_STATUS_SINGULAR_FIELD`
+// (no part of the surface reaches the slope, or the linear system is singular).
+LmlStatus lml_field_values_from_slope(const struct LmlMesh *mesh,
+                                      const double *axis,
+                                      double slope_degrees,
+                                      double *out,
+                                      size_t capacity,
+                                      size_t *needed);
+
+// Writes to `*slope_degrees` the slope β the constant-slope session `field` aims at: the given
+// one, or for `LML_FAMILY_FREE_SLOPE` the one fitted to the field before its last iteration (the
+// least-squares slope of its level curves).
+//
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, or a session of
+// another family).
+LmlStatus lml_field_slope(const struct LmlField *field, double *slope_degrees);
+
+// The boundary of the region where the slope `slope_degrees` about `axis` is reachable (paper
+// Sec. 5.2.3: the isophote where the tangent planes themselves have that slope, moved a little
+// inwards as the field's slope terms are): polylines on `mesh`, read like level curves
+// (`lml_curves_count`, `lml_curves_points`, …; their level is 0). The reachable region lies on
+// the steeper side. No polyline: the whole surface is reachable, or none of it.
+//
+// - `axis`: 3 doubles (finite, not zero); `slope_degrees` in (−90, 90).
+// - `out`: receives the new handle (release with `lml_curves_free`), NULL on failure.
+//
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, an axis not finite or
+// zero, a slope out of range, named).
+LmlStatus lml_curves_new_reachable_boundary(const struct LmlMesh *mesh,
+                                            const double *axis,
+                                            double slope_degrees,
+                                            struct LmlCurves **out);
 
 // Fills `*out` with a preset material by name: "timber" (C24: E 11 GPa, G 0.69 GPa, 24 MPa),
 // "plywood" (birch: 9.5 GPa, 0.62 GPa, 30 MPa), "steel" (S355: 210 GPa, 81 GPa, 355 MPa) or

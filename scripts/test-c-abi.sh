@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Checks Lamella's C ABI from the outside: builds the library, compiles the C harness
 # (tests/c) as strict C99 and the header as C++17, runs the harness under valgrind (zero
-# errors, zero leaks), and builds and runs the C and C++ examples (examples/c, examples/cpp),
-# which must write the same curves and strips.
+# errors, zero leaks; its two parts side by side), and builds and runs the C and C++ examples
+# (examples/c, examples/cpp), which must write the same curves and strips.
 # Needs cargo, cc, c++ and valgrind (installed with apt-get if missing).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -34,9 +34,26 @@ echo "== C ABI: harness"
 cc "${cflags[@]}" tests/c/*.c "${link[@]}" -o "$build/harness"
 scratch="$(mktemp -d)"
 trap 'rm -rf "$scratch"' EXIT
+# Valgrind runs a process on one core, so the harness runs as its two parts side by side, each in
+# its own scratch directory; the statuses each part provoked are then checked together.
 # The suppression file covers only rayon's global worker threads, alive at exit (see the file).
-RUST_BACKTRACE=0 valgrind --quiet --leak-check=full --errors-for-leak-kinds=definite,possible --num-callers=40 \
-    --suppressions=tests/c/valgrind.supp --error-exitcode=1 "$build/harness" "$scratch"
+run_part() {
+    mkdir -p "$scratch/$1"
+    RUST_BACKTRACE=0 valgrind --quiet --leak-check=full --errors-for-leak-kinds=definite,possible --num-callers=40 \
+        --suppressions=tests/c/valgrind.supp --error-exitcode=1 "$build/harness" "$scratch/$1" "$1" \
+        >"$scratch/$1.log" 2>&1
+}
+run_part starts & starts=$!
+run_part pipeline & pipeline=$!
+failed=0
+wait "$starts" || failed=1
+wait "$pipeline" || failed=1
+for part in starts pipeline; do
+    echo "-- harness part: $part"
+    cat "$scratch/$part.log"
+done
+"$build/harness" --every-status-seen "$scratch/starts/statuses" "$scratch/pipeline/statuses" || failed=1
+[ "$failed" = 0 ] || { echo "the C harness failed (see above)"; exit 1; }
 
 echo "== C ABI: examples"
 cc "${cflags[@]}" -Iexamples/c examples/c/*.c "${link[@]}" -o "$build/design_c"

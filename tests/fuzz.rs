@@ -32,6 +32,7 @@ mod mesh_input;
 #[path = "../src/bin/lamella/strokes_file.rs"]
 mod strokes_file;
 
+#[path = "integration/mesh_support/mod.rs"]
 mod mesh_support;
 
 mod fuzz_support;

@@ -111,7 +111,7 @@ namespace Lamella.Tests
         /// <summary>
         /// The developed P-curve of angle θ with its apex (lowest or highest point) at (x0, z0), opening upwards (up)
         /// or downwards: z = z0 ± (cosh(k(x − x0)) − 1)/k with k = tan(90° − θ)/R (Wunderlich's catenaries; the
-        /// derivation is in tests/tracing_cylinder.rs).
+        /// derivation is in tests/integration/tracing_cylinder.rs).
         /// </summary>
         public static double Catenary(double thetaDegrees, double x0, double z0, bool up, double x)
         {

@@ -59,9 +59,9 @@ namespace Lamella.Tests
             Assert.Greater(start.AngleErrorMaxDegrees, 5.0, "the start must not already be the answer");
             Assert.IsTrue(final.IsConverged, "not converged after " + final.Iterations + " iterations");
             Assert.AreEqual(totalIterations, (long)final.Iterations);
-            // tests/field_cylinder.rs: E_angle ≤ 1e-5, no singular vertices; the report's max angle error, measured along
+            // tests/integration/field_cylinder.rs: E_angle ≤ 1e-5, no singular vertices; the report's max angle error, measured along
             // the level polylines, reads 0.75° here since the curve-level jets of the core (3f04e84; under 0.5° before,
-            // as tests/field_cylinder.rs still asks): 1° (the frames against the analytic normal: 2°, below).
+            // as tests/integration/field_cylinder.rs still asks): 1° (the frames against the analytic normal: 2°, below).
             Assert.LessOrEqual(final.EnergyAngle, 1e-5);
             Assert.LessOrEqual(final.AngleErrorMaxDegrees, 1.0);
             Assert.LessOrEqual(final.AngleErrorRmsDegrees, final.AngleErrorMaxDegrees);

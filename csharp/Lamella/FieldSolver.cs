@@ -79,6 +79,20 @@ namespace Lamella
             }
         }
 
+        /// <summary>
+        /// The slope β in degrees a constant-slope session aims at: the given one, or for <see cref="Family.FreeSlope"/> the one
+        /// fitted to the field before its last iteration. Other families throw <see cref="Status.InvalidArgument"/>.
+        /// </summary>
+        public double SlopeDegrees
+        {
+            get
+            {
+                double slope = 0.0;
+                Native.Check(Locked(h => NativeMethods.lml_field_slope(h, out slope)));
+                return slope;
+            }
+        }
+
         /// <summary>Replaces the remaining weight schedule by constant weights (paper Eq. 12); a converged session runs again.</summary>
         public void SetWeights(Weights weights) => Native.Check(Locked(h => NativeMethods.lml_field_set_weights(h, weights)));
 

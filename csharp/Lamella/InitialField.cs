@@ -31,6 +31,22 @@ namespace Lamella
         }
 
         /// <summary>
+        /// The start of a constant-slope family (paper Sec. 5.2.3): a smooth field whose level curves follow, wherever the
+        /// slope <paramref name="slopeDegrees"/> (in (−90, 90)) about <paramref name="axis"/> (x, y, z; finite, not zero) is
+        /// reachable, the tangent directions of that slope. Solve it with <see cref="FieldParams.ConstantSlope"/> of the
+        /// same axis and slope. A surface that reaches the slope nowhere throws <see cref="Status.SingularField"/>.
+        /// </summary>
+        public static double[] FromSlope(LamellaMesh mesh, double[] axis, double slopeDegrees)
+        {
+            if (mesh == null) throw new ArgumentNullException(nameof(mesh));
+            double[] checkedAxis = Vectors.Axis(axis, nameof(axis));
+            var values = new double[mesh.VertexCount];
+            UIntPtr needed;
+            Native.Check(NativeMethods.lml_field_values_from_slope(mesh.Handle, checkedAxis, slopeDegrees, values, Native.Size(values.Length), out needed));
+            return values;
+        }
+
+        /// <summary>
         /// The smooth field whose level sets follow the strokes (each a polyline, x, y, z per point, drawn near the
         /// surface, in the order the family should run) and the estimated θ in degrees that they suggest.
         /// Strokes too far from the surface, crossing, too short, or fewer than two throw <see cref="Status.InvalidStrokes"/>.

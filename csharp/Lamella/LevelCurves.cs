@@ -1,4 +1,5 @@
 using System;
+using Lamella.Conversion;
 using Lamella.Interop;
 
 namespace Lamella
@@ -40,6 +41,20 @@ namespace Lamella
             if (count < 0) throw new ArgumentOutOfRangeException(nameof(count));
             CurvesHandle handle = null;
             Native.Check(net.Locked(h => NativeMethods.lml_curves_new_from_net(h, (uint)k, Native.Size(count), spacing, out handle)));
+            return new LevelCurves(handle);
+        }
+
+        /// <summary>
+        /// The boundary of the region where the slope <paramref name="slopeDegrees"/> about <paramref name="axis"/> is
+        /// reachable (paper Sec. 5.2.3: the isophote where the tangent planes themselves have that slope, moved a little
+        /// inwards); the reachable region lies on the steeper side. No polyline: all of the surface is reachable, or none.
+        /// </summary>
+        public static LevelCurves ReachableBoundary(LamellaMesh mesh, double[] axis, double slopeDegrees)
+        {
+            if (mesh == null) throw new ArgumentNullException(nameof(mesh));
+            double[] checkedAxis = Vectors.Axis(axis, nameof(axis));
+            CurvesHandle handle = null;
+            Native.Check(NativeMethods.lml_curves_new_reachable_boundary(mesh.Handle, checkedAxis, slopeDegrees, out handle));
             return new LevelCurves(handle);
         }
 

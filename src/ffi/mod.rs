@@ -11,7 +11,8 @@
 //! ([`LmlSearch`]), field solver sessions ([`LmlField`]), level curves ([`LmlCurves`]) and rectifying strips with their unrollings and
 //! metrics ([`LmlStrips`]), each a handle module with `lml_<handle>_new` / `_free` and two-call
 //! array outputs, and the initialisation of Sec. 3.2.2: boundary start points, traced guide
-//! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes; and nets of two
+//! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes; constant-slope
+//! families (Sec. 5.2.3) with their start field and reachable region; and nets of two
 //! families ([`LmlNet`], paper Sec. 4.1) with their quad net and nodes ([`LmlStripNet`]); surface optimisation ([`LmlReshape`], Sec. 3.3);
 //! shading designs ([`LmlShading`], Sec. 6: site, labels, strips with one θ per curve, the
 //! sun-path check); and the interactive 3D viewer page of strips (`lml_strips_view_html`).
@@ -49,6 +50,7 @@ mod trace_options;
 mod boundary_starts;
 mod guides;
 mod initial_fields;
+mod slope;
 mod fabrication;
 mod net;
 mod strip_net;
@@ -74,6 +76,7 @@ pub use reshape::*;
 pub use shading::*;
 pub use search::*;
 pub use session::*;
+pub use slope::*;
 pub use status::*;
 pub use strip_metrics::*;
 pub use strip_net::*;

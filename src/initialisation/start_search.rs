@@ -157,6 +157,14 @@ impl StartSearch {
     pub fn new(mesh: &TriMesh, mut params: FieldParams, options: SearchOptions) -> Result<StartSearch, FieldError> {
         validate_params(&params)?;
         validate(&options)?;
+        if let Family::ConstantSlope { .. } = params.family {
+            // Height, guide and conformal candidates are starts of angle families; a constant-slope
+            // family has its own start, the slope directions.
+            return Err(FieldError::InvalidParameter {
+                name: "family",
+                message: "the start search covers the families by θ; a constant-slope field starts from slope_start_field".into(),
+            });
+        }
         params.family = params.family.by_name();
         let mut search = StartSearch {
             mesh: mesh.clone(),

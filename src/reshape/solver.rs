@@ -307,3 +307,26 @@ fn validate_params(params: &ReshapeParams) -> Result<(), ReshapeError> {
         other => ReshapeError::Field(other),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solver::worst_block_jacobian;
+    use crate::surfaces::hall_roof;
+
+    /// Every block's Jacobian against central differences of its residuals (with what an
+    /// iteration freezes held fixed), away from the start: positions and auxiliaries perturbed so
+    /// that no term sits at its rest value.
+    #[test]
+    fn every_block_of_the_surface_problem_has_the_jacobian_of_its_residuals() {
+        let mesh = hall_roof(150).into_mesh().expect("roof");
+        let field: Vec<f64> = mesh.positions().iter().map(|p| p.x + 0.1 * p.y * p.y).collect();
+        let mut solver = ReshapeSolver::new(&mesh, &field, ReshapeParams::new(45.0)).expect("solver");
+        for (i, value) in solver.x.iter_mut().enumerate() {
+            // A deterministic perturbation of about a tenth of an edge (the mesh is unit-scaled).
+            *value += 0.1 * ((i as f64) * 12.9898).sin();
+        }
+        let worst = worst_block_jacobian(&solver.problem, &solver.x, 1e-6);
+        assert!(worst.0 < 1e-4, "block {} of {}: {}", worst.1, solver.problem.block_count(), worst.0);
+    }
+}

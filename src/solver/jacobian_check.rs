@@ -43,3 +43,9 @@ pub fn check_block_jacobian<P: LeastSquaresProblem>(problem: &P, x: &[f64], bloc
     }
     worst
 }
+
+/// [`check_block_jacobian`] over every block of `problem`: the largest error and its block
+/// (`(0, 0)` for a problem without blocks).
+pub fn worst_block_jacobian<P: LeastSquaresProblem>(problem: &P, x: &[f64], h: f64) -> (f64, usize) {
+    (0..problem.block_count()).map(|b| (check_block_jacobian(problem, x, b, h), b)).fold((0.0, 0), |worst, this| if this.0 > worst.0 { this } else { worst })
+}

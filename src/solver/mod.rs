@@ -22,7 +22,7 @@ mod structure;
 mod substructured_cholesky;
 
 pub use error::SolverError;
-pub use jacobian_check::check_block_jacobian;
+pub use jacobian_check::{check_block_jacobian, worst_block_jacobian};
 pub use layout::VariableLayout;
 pub use levenberg_marquardt::{DampingState, LevenbergMarquardt};
 pub use options::LmOptions;

@@ -60,6 +60,43 @@ int every_status_seen(void)
     return all;
 }
 
+int save_seen_statuses(const char *path)
+{
+    FILE *file = fopen(path, "w");
+    int code, ok;
+    if (file == NULL) {
+        return 0;
+    }
+    for (code = STATUS_MIN; code <= STATUS_MAX; code++) {
+        if (seen[code - STATUS_MIN]) {
+            fprintf(file, "%d\n", code);
+        }
+    }
+    ok = !ferror(file);
+    return fclose(file) == 0 && ok;
+}
+
+int load_seen_statuses(const char *path)
+{
+    FILE *file = fopen(path, "r");
+    int code, ok = 1;
+    if (file == NULL) {
+        printf("cannot read %s\n", path);
+        return 0;
+    }
+    while (fscanf(file, "%d", &code) == 1) {
+        if (code < STATUS_MIN || code > STATUS_MAX) {
+            printf("%s: %d is not a status code\n", path, code);
+            ok = 0;
+        } else {
+            seen[code - STATUS_MIN] = 1;
+        }
+    }
+    ok = ok && feof(file);
+    fclose(file);
+    return ok;
+}
+
 size_t occurrences(const char *text, const char *needle)
 {
     size_t count = 0;

@@ -19,6 +19,13 @@ void check_message(const char *part, const char *file, int line);
 /* Whether every LmlStatus value was produced by some checked call; prints the missing ones. */
 int every_status_seen(void);
 
+/* Writes the status codes seen so far to `path`, one per line; whether that succeeded. */
+int save_seen_statuses(const char *path);
+
+/* Marks the status codes listed in `path` (as written by save_seen_statuses) as seen; whether the
+ * file was read whole. */
+int load_seen_statuses(const char *path);
+
 /* Counts the occurrences of `needle` in `text`. */
 size_t occurrences(const char *text, const char *needle);
 

@@ -55,6 +55,11 @@ void test_net(const Cylinder *cylinder);
  * every invalid input, stepping, positions and deviations against the distance from the axis. */
 void test_reshape(const Cylinder *cylinder);
 
+/* Constant-slope families on the cylinder: every invalid input, the start field and the solve
+ * about its axis (helices, straight in the development at the slope), and the boundary of the
+ * reachable region about an axis across it (the ruling where the tangent planes have the slope). */
+void test_slope(const Cylinder *cylinder);
+
 /* Shading designs (Sec. 6) on a small vertical facade: every invalid input, stepping, strips
  * with one theta per curve against the noon sun's elevation, the sun-path check's blocked
  * fraction, and the strips' verdict status on a twisted facade. */

@@ -1,7 +1,7 @@
 /* Guide curves (paper Sec. 3.2.1) and the initial fields of Sec. 3.2.2 through the C ABI, on
  * the harness cylinder. In its development (s = R phi, z) the P-curves of angle theta are
  * catenaries z = z0 +- (cosh(k (s - s0)) - 1) / k, k = tan(90 - theta) / R (see
- * tests/tracing_cylinder.rs); the boundary loop runs counter-clockwise in the development
+ * tests/integration/tracing_cylinder.rs); the boundary loop runs counter-clockwise in the development
  * (bottom left to right, right side up, top right to left, left side down). */
 #include "check.h"
 #include "harness.h"

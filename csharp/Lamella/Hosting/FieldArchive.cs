@@ -48,8 +48,8 @@ namespace Lamella.Hosting
     public static class FieldArchive
     {
         private static readonly byte[] Magic = Encoding.ASCII.GetBytes("LMLA");
-        /// <summary>The format version written.</summary>
-        public const int Version = 1;
+        /// <summary>The format version written (2: the parameters carry the slope axis). Version 1 is read too.</summary>
+        public const int Version = 2;
         private const int MaxValues = 1 << 28;
 
         /// <summary>The fields as bytes.</summary>
@@ -89,7 +89,7 @@ namespace Lamella.Hosting
             if (bytes == null) throw new ArgumentNullException(nameof(bytes));
             if (bytes.Length < 8 || Encoding.ASCII.GetString(bytes, 0, 4) != "LMLA") throw new FormatException("not saved Lamella fields (bad magic number)");
             int version = BitConverter.ToInt32(bytes, 4);
-            if (version != Version) throw new FormatException("saved Lamella fields of format version " + version + "; this plugin reads version " + Version);
+            if (version != 1 && version != Version) throw new FormatException("saved Lamella fields of format version " + version + "; this plugin reads versions 1 to " + Version);
             try
             {
                 using (var input = new MemoryStream(bytes, 8, bytes.Length - 8))
@@ -104,7 +104,7 @@ namespace Lamella.Hosting
                         int iteration = reader.ReadInt32();
                         string signature = reader.ReadString();
                         double theta = reader.ReadDouble();
-                        FieldParams parameters = ReadParams(reader);
+                        FieldParams parameters = ReadParams(reader, version);
                         FieldReport report = ReadReport(reader);
                         int n = reader.ReadInt32();
                         if (n < 0 || n > MaxValues) throw new FormatException("saved field " + i + " claims " + n + " values");
@@ -166,9 +166,14 @@ namespace Lamella.Hosting
             w.Write(p.Weights.Angle);
             w.Write(p.GradientTarget);
             w.Write(p.RelativeTolerance);
+            double[] axis = p.SlopeAxis ?? DefaultSlopeAxis;
+            for (int k = 0; k < 3; k++) w.Write(axis[k]);
         }
 
-        private static FieldParams ReadParams(BinaryReader r) => new FieldParams
+        /// <summary>The library's default slope axis, that of version 1 archives.</summary>
+        private static readonly double[] DefaultSlopeAxis = { 0.0, 0.0, 1.0 };
+
+        private static FieldParams ReadParams(BinaryReader r, int version) => new FieldParams
         {
             Family = (Family)r.ReadUInt32(),
             WarmUp = r.ReadUInt32(),
@@ -176,6 +181,7 @@ namespace Lamella.Hosting
             Weights = new Weights(r.ReadDouble(), r.ReadDouble(), r.ReadDouble()),
             GradientTarget = r.ReadDouble(),
             RelativeTolerance = r.ReadDouble(),
+            SlopeAxis = version >= 2 ? new[] { r.ReadDouble(), r.ReadDouble(), r.ReadDouble() } : (double[])DefaultSlopeAxis.Clone(),
         };
 
         private static void WriteReport(BinaryWriter w, FieldReport r)

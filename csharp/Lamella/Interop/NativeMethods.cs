@@ -227,6 +227,11 @@ namespace Lamella.Interop
         public static extern Status lml_field_values_from_guides(MeshHandle mesh, GuidesHandle guides, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed,
             out double gradientTarget);
         [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_field_values_from_slope(MeshHandle mesh, double[] axis, double slopeDegrees, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_field_slope(FieldHandle field, out double slopeDegrees);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_curves_new_reachable_boundary(MeshHandle mesh, double[] axis, double slopeDegrees, out CurvesHandle curves);
+        [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_field_values_from_strokes(MeshHandle mesh, double[] points, UIntPtr pointCount, UIntPtr[] offsets, UIntPtr strokeCount,
             [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed, out double thetaDegrees);
 

@@ -65,6 +65,12 @@ pub enum Command {
     /// report.json; exits 3 when a block region is not blocked or a pass region not passed to
     /// the stated fractions.
     Shade(ShadeArgs),
+    /// Write a built-in surface as surface.obj (for --mesh of the other commands): the hall roof of
+    /// the default design, or the Brauner surface of the paper's Fig. 32 (Sec. 5.2.4, Eq. 23),
+    /// whose u-lines are asymptotic curves of constant slope against the horizontal; for it also
+    /// asymptotic.obj, those u-lines computed exactly, a validation case for
+    /// `field --family slope` and the asymptotic family. Writes report.json too.
+    Surface(SurfaceArgs),
 }
 
 /// Progress and summary output.
@@ -537,6 +543,30 @@ pub struct ShadeArgs {
     /// 180 exclusive: above it the command exits 3 (the strips' verdict, as `design`).
     #[arg(long, value_name = "DEGREES", default_value_t = 2.0, allow_negative_numbers = true)]
     pub tolerance: f64,
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub verbosity: VerbosityArgs,
+}
+
+#[derive(Args, Debug, Clone)]
+pub struct SurfaceArgs {
+    /// Which surface: hall-roof (40 m × 24 m, the default design's) or brauner (Fig. 32:
+    /// x = cos²u − 2v, y = sin u cos u − u, z = 2μ e^{−v} cos u over u ∈ [0.6, π − 0.6],
+    /// v ∈ [−0.5, 0.5]).
+    #[arg(value_name = "KIND", value_parser = ["hall-roof", "brauner"])]
+    pub kind: String,
+    /// Approximate number of vertices, 100 to 1000000 [default: 3000].
+    #[arg(long, value_name = "N")]
+    pub vertices: Option<usize>,
+    /// brauner: the constant μ > 0 of Eq. 23 (the u-line v has the slope atan(μ e^{−v}))
+    /// [default: 1].
+    #[arg(long, value_name = "MU", allow_negative_numbers = true)]
+    pub mu: Option<f64>,
+    /// brauner: number of u-lines in asymptotic.obj, 2 to 1000, evenly spaced in v
+    /// [default: 11].
+    #[arg(long, value_name = "N")]
+    pub lines: Option<usize>,
     #[command(flatten)]
     pub out: OutArgs,
     #[command(flatten)]

@@ -29,6 +29,7 @@ mod start_field;
 mod strip_obj;
 mod strips_cmd;
 mod strokes_file;
+mod surface_cmd;
 mod svg;
 mod trace_cmd;
 mod units;
@@ -73,5 +74,6 @@ fn run(cli: &Cli) -> CliResult<()> {
         Some(Command::View(args)) => view_cmd::run(args),
         Some(Command::Reshape(args)) => reshape_cmd::run(args),
         Some(Command::Shade(args)) => shade_cmd::run(args),
+        Some(Command::Surface(args)) => surface_cmd::run(args),
     }
 }

@@ -19,7 +19,7 @@ use crate::view_cmd::write_view;
 use lamella::fabrication::{plan_fabrication, FabricationStrip};
 use lamella::field::Family;
 use lamella::initialisation::SearchOptions;
-use lamella::net::{flat_point, net_nodes, quad_net_at, NetParams, NetReport, NetSolver, Node, QuadNet, NODE_TOLERANCE_EDGES};
+use lamella::net::{flat_point, strip_net, NetParams, NetReport, NetSolver, Node, QuadNet, StripNet};
 use lamella::strips::{PatternMetrics, StripPattern};
 use serde_json::{json, Value};
 use std::fmt::Write as _;
@@ -100,14 +100,8 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
         .zip(&fields)
         .map(|(family, field)| build_strips(&mesh, field, family.theta_degrees(), args.lines, args.width, args.tolerance))
         .collect::<CliResult<_>>()?;
-    let levels = [0, 1].map(|k| runs[k].curves.iter().map(|c| c.level).fold(Vec::new(), |mut levels: Vec<f64>, l| {
-        if levels.last() != Some(&l) {
-            levels.push(l);
-        }
-        levels
-    }));
-    let net = quad_net_at(&mesh, &fields[0], &fields[1], levels);
-    let nodes = net_nodes(&net, [&runs[0].pattern, &runs[1].pattern], NODE_TOLERANCE_EDGES * mesh.mean_edge_length());
+    // The same net and nodes as the C ABI's and C#'s: at the levels that carry strips.
+    let StripNet { net, nodes } = strip_net(&mesh, &fields[0], &fields[1], [&runs[0].pattern, &runs[1].pattern]).map_err(|e| CliError::internal(format!("net: {e}")))?;
     let strips_seconds = strips_started.elapsed().as_secs_f64();
 
     for (k, run) in runs.iter().enumerate() {

@@ -1,0 +1,170 @@
+//! `lamella net`: the files of a two-family net, their geometry read back from outside, the
+//! family syntax and its errors.
+
+use crate::cli_support;
+
+use cli_support::{assert_bad_input, lamella, read_json, stderr, Scratch};
+use lamella::surfaces::{hyperbolic_paraboloid, HyperbolicParaboloid};
+use std::path::PathBuf;
+
+/// A hyperbolic paraboloid z = xy/5 over [−5, 5]² as OBJ.
+fn hypar_obj(dir: &Scratch) -> PathBuf {
+    let surface = HyperbolicParaboloid { c: 5.0, half_width: 5.0, target_vertices: 900, irregularity: 0.4, seed: 5 };
+    let mesh = hyperbolic_paraboloid(&surface).expect("surface").into_mesh().expect("mesh");
+    let path = dir.path("hypar.obj");
+    mesh.write_obj(std::fs::File::create(&path).expect("create")).expect("write");
+    path
+}
+
+/// Vertex positions, faces and polylines (as 0-based index lists) of an OBJ text.
+type ObjElements = (Vec<[f64; 3]>, Vec<Vec<usize>>, Vec<Vec<usize>>);
+
+/// `v` lines, `f` lines (as index lists) and `l` lines of an OBJ text.
+fn obj_elements(text: &str) -> ObjElements {
+    let (mut v, mut f, mut l) = (Vec::new(), Vec::new(), Vec::new());
+    for line in text.lines() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => {
+                let p: Vec<f64> = words.map(|w| w.parse().expect("number")).collect();
+                v.push([p[0], p[1], p[2]]);
+            }
+            Some("f") => f.push(words.map(|w| w.parse::<usize>().expect("index") - 1).collect()),
+            Some("l") => l.push(words.map(|w| w.parse::<usize>().expect("index") - 1).collect()),
+            _ => {}
+        }
+    }
+    (v, f, l)
+}
+
+#[test]
+fn the_asymptotic_net_of_a_hyperbolic_paraboloid_is_written_with_its_nodes() {
+    let dir = Scratch::new("net-aa");
+    let mesh = hypar_obj(&dir);
+    let output = lamella(&dir.0, &["net", "--mesh", mesh.to_str().expect("path"), "--families", "A,A", "--lines", "6", "--out", "out", "--quiet"]);
+    let code = output.status.code();
+    assert!(code == Some(0) || code == Some(3), "exit {code:?}: {}", stderr(&output));
+    let out = dir.path("out");
+    for name in ["curves_0.obj", "curves_1.obj", "strips_0.obj", "strips_1.obj", "net.obj", "nodes.csv", "unrolled.svg", "preview.svg", "view.html", "report.json"] {
+        assert!(out.join(name).is_file(), "{name} missing");
+    }
+    // The net's vertices lie on z = xy/5 and its quads are flat parallelograms of the rulings:
+    // each quad edge runs along x or along y.
+    let (vertices, quads, lines) = obj_elements(&std::fs::read_to_string(out.join("net.obj")).expect("net.obj"));
+    assert!(quads.len() >= 16, "{} quads", quads.len());
+    for p in &vertices {
+        assert!((p[2] - p[0] * p[1] / 5.0).abs() < 0.05, "{p:?} is off the surface");
+    }
+    for quad in &quads {
+        for k in 0..4 {
+            let (a, b) = (vertices[quad[k]], vertices[quad[(k + 1) % 4]]);
+            let (dx, dy) = ((b[0] - a[0]).abs(), (b[1] - a[1]).abs());
+            assert!(dx.min(dy) <= 0.02 * dx.max(dy), "a quad edge runs diagonally: {a:?} → {b:?}");
+        }
+    }
+    assert!(!lines.is_empty(), "no rows or columns");
+    // nodes.csv: one row per crossing of two strips, on the surface.
+    let nodes = std::fs::read_to_string(out.join("nodes.csv")).expect("nodes.csv");
+    let mut rows = nodes.lines();
+    assert_eq!(rows.next(), Some("strip_0,strip_1,arc_length_0,arc_length_1,x,y,z,axis_x,axis_y,axis_z,ruling_angle_degrees"));
+    let mut count = 0;
+    for row in rows {
+        let cells: Vec<&str> = row.split(',').collect();
+        assert!(cells[0].starts_with("f0_strip_") && cells[1].starts_with("f1_strip_"), "{row}");
+        let numbers: Vec<f64> = cells[2..].iter().map(|c| c.parse().expect("number")).collect();
+        assert!(numbers[0] >= 0.0 && numbers[1] >= 0.0, "{row}");
+        assert!((numbers[4] - numbers[2] * numbers[3] / 5.0).abs() < 0.05, "{row}");
+        let axis = (numbers[5] * numbers[5] + numbers[6] * numbers[6] + numbers[7] * numbers[7]).sqrt();
+        assert!((axis - 1.0).abs() < 1e-6 && (0.0..=90.0).contains(&numbers[8]), "{row}");
+        count += 1;
+    }
+    assert!(count >= 9, "{count} nodes");
+    let report = read_json(&out.join("report.json"));
+    assert_eq!(report["nodes"]["count"].as_u64(), Some(count));
+    assert!(report["intersection"]["mean_degrees"].as_f64().expect("mean") > 60.0, "{report}");
+    let svg = std::fs::read_to_string(out.join("unrolled.svg")).expect("svg");
+    assert_eq!(svg.matches("<circle class=\"node\"").count(), 2 * count as usize, "one mark per node on each strip");
+}
+
+#[test]
+fn family_names_and_angles_are_checked() {
+    let dir = Scratch::new("net-bad");
+    assert_bad_input(&dir.0, &["net", "--families", "P60", "--out", "o"], &["--families", "two families"]);
+    assert_bad_input(&dir.0, &["net", "--families", "P60,X", "--out", "o"], &["--families", "'X'"]);
+    assert_bad_input(&dir.0, &["net", "--families", "P200,G", "--out", "o"], &["--families", "P200"]);
+    assert_bad_input(&dir.0, &["net", "--families", "A,A", "--min-angle", "95", "--out", "o"], &["min_intersection_degrees"]);
+}
+
+#[test]
+fn a_net_crossing_below_the_minimum_angle_exits_3_and_says_where() {
+    // The rulings of z = xy/5 over [−5, 5]² cross at 60° in the corners and at 90° in the middle:
+    // a minimum of 85° cannot be held by an A,A net, so the verdict must say so.
+    let dir = Scratch::new("net-min-angle");
+    let mesh = hypar_obj(&dir);
+    let output = lamella(&dir.0, &["net", "--mesh", mesh.to_str().expect("path"), "--families", "A,A", "--min-angle", "85", "--lines", "6", "--out", "out", "--quiet"]);
+    assert_eq!(output.status.code(), Some(3), "{}", stderr(&output));
+    let report = read_json(&dir.path("out").join("report.json"));
+    let min = report["intersection"]["min_degrees"].as_f64().expect("min_degrees");
+    let families_missed = stderr(&output).contains("family A:");
+    assert!(min < 84.0 || families_missed, "exit 3 with the families crossing at {min}° and no family missed");
+    if min < 84.0 {
+        assert!(stderr(&output).contains(&format!("the families cross at {min:.1}°")), "{}", stderr(&output));
+    }
+}
+
+#[test]
+fn a_net_with_a_material_writes_workshop_files_for_both_families_with_the_nodes() {
+    let dir = Scratch::new("net-fabrication");
+    let mesh = hypar_obj(&dir);
+    let args = ["net", "--mesh", mesh.to_str().expect("path"), "--families", "A,A", "--lines", "6", "--width", "0.12", "--material", "plywood", "--thickness", "4mm", "--stock", "4m", "--out", "out", "--quiet"];
+    let output = lamella(&dir.0, &args);
+    let code = output.status.code();
+    assert!(code == Some(0) || code == Some(3), "exit {code:?}: {}", stderr(&output));
+    let out = dir.path("out");
+    for name in ["cut.dxf", "cut.svg", "bom.csv", "utilisation.svg"] {
+        assert!(out.join(name).is_file(), "{name} missing");
+    }
+    // Nodes per strip, from nodes.csv: (strip name, arc length along it).
+    let nodes_csv = std::fs::read_to_string(out.join("nodes.csv")).expect("nodes.csv");
+    let mut nodes: Vec<(String, f64)> = Vec::new();
+    for line in nodes_csv.lines().skip(1) {
+        let cells: Vec<&str> = line.split(',').collect();
+        nodes.push((cells[0].to_string(), cells[2].parse().expect("arc length")));
+        nodes.push((cells[1].to_string(), cells[3].parse().expect("arc length")));
+    }
+    assert!(nodes.len() >= 2 * 16, "{} node ends", nodes.len());
+    // The bill of materials covers both families, each with its own θ (asymptotic: 0°), and the
+    // pieces of a strip chain along it with 0.3 m overlaps that hold no node.
+    let bom = std::fs::read_to_string(out.join("bom.csv")).expect("bom.csv");
+    let rows: Vec<Vec<String>> = bom.lines().skip(1).map(|l| l.split(',').map(str::to_string).collect()).collect();
+    for k in 0..2 {
+        assert!(rows.iter().any(|r| r[1].starts_with(&format!("f{k}_strip_"))), "no piece of family {k}");
+    }
+    assert!(rows.iter().all(|r| r[2] == "asymptotic" && r[3].parse::<f64>() == Ok(0.0)), "{bom}");
+    let overlap = 0.3;
+    let mut spliced = 0;
+    let mut start = 0.0;
+    for (i, row) in rows.iter().enumerate() {
+        let length: f64 = row[4].parse().expect("length");
+        assert!(length <= 4.0 + 1e-9, "{} is {length} m long", row[0]);
+        let end = start + length;
+        let continues = rows.get(i + 1).is_some_and(|next| next[1] == row[1]);
+        if continues {
+            spliced += 1;
+            let inside: Vec<f64> = nodes.iter().filter(|(s, a)| *s == row[1] && *a >= end - overlap && *a <= end).map(|n| n.1).collect();
+            assert!(inside.is_empty(), "the splice of {} over [{:.3}, {end:.3}] m holds nodes at {inside:?}", row[0], end - overlap);
+            start = end - overlap;
+        } else {
+            start = 0.0;
+        }
+    }
+    assert!(spliced >= 4, "only {spliced} splices: the strips should outgrow 4 m boards");
+    // Every node is marked on both of its strips: a circle on the MARKS layer each (or two where
+    // it falls in a splice's overlap).
+    let dxf = std::fs::read_to_string(out.join("cut.dxf")).expect("cut.dxf");
+    let lines: Vec<&str> = dxf.lines().map(str::trim).collect();
+    let circles = lines.windows(4).filter(|w| w[0] == "0" && w[1] == "CIRCLE" && w[2] == "8" && w[3] == "MARKS").count();
+    assert!(circles >= nodes.len(), "{circles} node marks for {} node ends", nodes.len());
+    let report = read_json(&out.join("report.json"));
+    assert_eq!(report["fabrication"]["pieces"].as_array().map(Vec::len), Some(rows.len()));
+}

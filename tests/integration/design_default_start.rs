@@ -1,0 +1,202 @@
+//! The default design on surfaces the project has not prepared, judged from outside: level
+//! curves against analytic answers (catenaries in a cylinder's development, the straight rulings
+//! of a hyperbolic paraboloid) and strip planes against the exact surface normals. No start is
+//! given: the default start search picks it.
+
+use crate::field_support;
+
+use field_support::{catenary_hausdorff, develop, line_fit};
+use lamella::curves::{extract_level_curves, uniform_levels, LevelCurve};
+use lamella::field::{Family, FieldParams, FieldSolver};
+use lamella::initialisation::{search_start, SearchOptions, StartKind};
+use lamella::mesh::{TriMesh, Vec3};
+use lamella::strips::{rectifying_strips, StripParams, StripPattern};
+use lamella::surfaces::{cylinder_patch, hyperbolic_paraboloid, CylinderPatch, HyperbolicParaboloid};
+
+const RADIUS: f64 = 5.0;
+
+/// A cylinder patch like the outside reviewer's: R 5 m, 120° span, 8 m high, irregular.
+fn cylinder(target_vertices: usize) -> TriMesh {
+    let patch = CylinderPatch { radius: RADIUS, span: 120f64.to_radians(), height: 8.0, target_vertices, irregularity: 0.5, seed: 21 };
+    cylinder_patch(&patch).expect("valid patch").into_mesh().expect("valid mesh")
+}
+
+/// The field of the family of `theta` from the default start, converged.
+fn default_design(mesh: &TriMesh, theta: f64) -> FieldSolver {
+    let outcome = search_start(mesh, FieldParams::pseudo_geodesic(theta), SearchOptions::default()).expect("a start");
+    // Meshes well above the default stand-in size are searched on a coarsening of it.
+    let proxy = SearchOptions::default().proxy_vertices;
+    assert_eq!(outcome.proxy_vertices.is_some(), 2 * mesh.vertex_count() > 3 * proxy, "{:?}", outcome.proxy_vertices);
+    let mut solver = outcome.solver;
+    let report = solver.step(400).expect("solver runs");
+    assert!(report.converged, "not converged after {} iterations", report.iterations);
+    solver
+}
+
+fn level_curves(mesh: &TriMesh, field: &[f64], count: usize) -> Vec<LevelCurve> {
+    let levels = uniform_levels(mesh, field, count).expect("levels");
+    extract_level_curves(mesh, field, &levels).expect("curves")
+}
+
+/// Largest symmetric Hausdorff distance between a level curve and its best catenary
+/// `v = c cosh(u/c)` (c = R tan θ) in the development, over the curve's length; curves shorter
+/// than a quarter of the height are left out (corner pieces).
+fn worst_catenary_deviation(mesh: &TriMesh, field: &[f64], theta: f64) -> f64 {
+    let k = 1.0 / (RADIUS * theta.to_radians().tan());
+    let mut worst: f64 = 0.0;
+    let mut measured = 0;
+    for curve in level_curves(mesh, field, 12) {
+        let points: Vec<(f64, f64)> = curve.points.iter().map(|p| develop(p, RADIUS)).collect();
+        let length: f64 = points.windows(2).map(|w| (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1)).sum();
+        if length < 2.0 {
+            continue;
+        }
+        worst = worst.max(catenary_hausdorff(&points, k) / length);
+        measured += 1;
+    }
+    assert!(measured >= 8, "only {measured} level curves measured");
+    worst
+}
+
+/// The signed angle (Sec. 3.1) of each strip quad's plane against the exact normal `normal`:
+/// the quad's direction across its centre line, `ê × N̂`, compared with θ.
+fn worst_quad_angle_error(pattern: &StripPattern, theta: f64, normal: impl Fn(&Vec3) -> Vec3) -> f64 {
+    let mut worst: f64 = 0.0;
+    for strip in &pattern.strips {
+        for j in 0..strip.centre.len() - 1 {
+            let edge = (strip.centre[j + 1] - strip.centre[j]).normalize();
+            let quad_normal = edge.cross(&(strip.left[j] - strip.centre[j])).normalize();
+            let n = normal(&((strip.centre[j] + strip.centre[j + 1]) * 0.5));
+            let across = edge.cross(&quad_normal);
+            let sign = if across.dot(&n.cross(&edge)) < 0.0 { -1.0 } else { 1.0 };
+            let angle = (sign * across.dot(&n)).clamp(-1.0, 1.0).acos().to_degrees();
+            worst = worst.max((angle - theta).abs());
+        }
+    }
+    worst
+}
+
+fn strips(mesh: &TriMesh, field: &[f64], theta: f64) -> StripPattern {
+    let curves: Vec<LevelCurve> = level_curves(mesh, field, 10).iter().map(|c| c.resampled(mesh.mean_edge_length()).expect("resampled")).collect();
+    rectifying_strips(mesh, &curves, &StripParams::new(theta, 0.25)).expect("valid parameters")
+}
+
+#[test]
+fn cylinder_families_from_the_default_start_are_the_catenaries() {
+    let mesh = cylinder(3000);
+    let radial = |p: &Vec3| Vec3::new(p.x, p.y, 0.0).normalize();
+    for theta in [45.0, 60.0, 75.0] {
+        let solver = default_design(&mesh, theta);
+        let field = solver.field();
+        // Paper Fig. 10: 0.47 % of the curve length; the issue asks 0.45 % at ~3,000 vertices.
+        let deviation = worst_catenary_deviation(&mesh, &field, theta);
+        assert!(deviation <= 0.0045, "θ = {theta}°: a level curve is {:.3} % of its length off its catenary", 100.0 * deviation);
+        let pattern = strips(&mesh, &field, theta);
+        assert!(pattern.verdict.is_acceptable(), "θ = {theta}°: {}", pattern.verdict.message());
+        assert_eq!(pattern.metrics.flipped_quads, 0);
+        let error = worst_quad_angle_error(&pattern, theta, radial);
+        assert!(error <= 1.5, "θ = {theta}°: a strip plane is {error}° off against the exact normal");
+    }
+}
+
+#[test]
+fn cylinder_catenaries_get_closer_as_the_mesh_is_refined() {
+    let coarse = worst_catenary_deviation(&cylinder(3000), &default_design(&cylinder(3000), 60.0).field(), 60.0);
+    let fine_mesh = cylinder(10000);
+    // At 10,000 vertices the start is searched on a 3,000-vertex coarsening and carried over.
+    let fine_field = default_design(&fine_mesh, 60.0).field();
+    let fine = worst_catenary_deviation(&fine_mesh, &fine_field, 60.0);
+    assert!(coarse <= 0.0045, "3,000 vertices: {:.3} %", 100.0 * coarse);
+    assert!(fine <= 0.0025, "10,000 vertices: {:.3} %", 100.0 * fine);
+    let pattern = strips(&fine_mesh, &fine_field, 60.0);
+    assert!(pattern.verdict.is_acceptable(), "10,000 vertices: {}", pattern.verdict.message());
+    let error = worst_quad_angle_error(&pattern, 60.0, |p: &Vec3| Vec3::new(p.x, p.y, 0.0).normalize());
+    assert!(error <= 1.5, "10,000 vertices: a strip plane is {error}° off against the exact normal");
+}
+
+#[test]
+fn the_search_rejects_the_rulings_of_the_cylinder() {
+    // The height along the chord of the arc has the rulings as level sets: straight, so every
+    // P-curve condition holds in the limit. The search must reject it as degenerate.
+    let mesh = cylinder(1500);
+    let outcome = search_start(&mesh, FieldParams::pseudo_geodesic(60.0), SearchOptions::default()).expect("a start");
+    let rulings: Vec<_> = outcome
+        .candidates
+        .iter()
+        .filter(|c| matches!(c.kind, StartKind::Height { direction, .. } if direction[2].abs() < 0.1))
+        .collect();
+    assert!(!rulings.is_empty());
+    for c in &rulings {
+        assert!(c.rejected.is_some(), "{} was not rejected: {c:?}", c.kind.describe());
+    }
+    let winner = &outcome.candidates[outcome.winner];
+    assert!(winner.rejected.is_none() && winner.straight_fraction < 0.5, "{winner:?}");
+}
+
+#[test]
+fn asymptotic_family_of_a_hyperbolic_paraboloid_is_its_rulings() {
+    let surface = HyperbolicParaboloid { c: 5.0, half_width: 5.0, target_vertices: 2000, irregularity: 0.5, seed: 8 };
+    let mesh = hyperbolic_paraboloid(&surface).expect("valid surface").into_mesh().expect("valid mesh");
+    // θ = 0 names the asymptotic family (E_asy, Eq. 13), not the pseudo-geodesic energy at 0°.
+    let solver = default_design(&mesh, 0.0);
+    assert_eq!(solver.params().family, Family::Asymptotic);
+    let field = solver.field();
+    let mut measured = 0;
+    for curve in level_curves(&mesh, &field, 12) {
+        let plan: Vec<(f64, f64)> = curve.points.iter().map(|p| (p.x, p.y)).collect();
+        let (deviation, length) = line_fit(&plan);
+        if length < 2.0 {
+            continue;
+        }
+        // Straight lines, along x or along y in plan: the rulings of z = xy/5.
+        assert!(deviation <= 0.005 * length, "a level curve bends by {:.3} % of its length", 100.0 * deviation / length);
+        let (first, last) = (plan[0], plan[plan.len() - 1]);
+        let (dx, dy) = ((last.0 - first.0).abs(), (last.1 - first.1).abs());
+        assert!(dx.min(dy) <= 0.01 * dx.max(dy), "a level curve runs diagonally ({dx}, {dy})");
+        measured += 1;
+    }
+    assert!(measured >= 8, "only {measured} curves measured");
+}
+
+#[test]
+fn theta_ninety_is_the_geodesic_family() {
+    let mesh = cylinder(1500);
+    let solver = default_design(&mesh, 90.0);
+    assert_eq!(solver.params().family, Family::Geodesic);
+    // Geodesics of a cylinder are helices: straight lines in the development.
+    for curve in level_curves(&mesh, &solver.field(), 8) {
+        let points: Vec<(f64, f64)> = curve.points.iter().map(|p| develop(p, RADIUS)).collect();
+        let (deviation, length) = line_fit(&points);
+        if length > 2.0 {
+            assert!(deviation <= 0.005 * length, "a geodesic bends by {:.3} % of its length", 100.0 * deviation / length);
+        }
+    }
+}
+
+#[test]
+fn a_cone_carries_a_sixty_degree_family_with_acceptable_strips() {
+    // A cone (a developable surface) with axis z and half-angle 30°, mapped from a jittered grid.
+    let half_angle = 30f64.to_radians();
+    let patch = CylinderPatch { radius: 6.0, span: 120f64.to_radians(), height: 6.0, target_vertices: 2500, irregularity: 0.5, seed: 5 };
+    let grid = cylinder_patch(&patch).expect("valid patch");
+    let positions = grid
+        .positions
+        .iter()
+        .map(|p| {
+            let (phi, s) = (p.y.atan2(p.x), 3.0 + p.z);
+            Vec3::new(s * half_angle.sin() * phi.cos(), s * half_angle.sin() * phi.sin(), s * half_angle.cos())
+        })
+        .collect();
+    let mesh = TriMesh::from_vertices_and_faces(positions, grid.faces).expect("valid cone");
+    // Exact outward normal of the cone: radial in plan, tilted by the half-angle.
+    let normal = |p: &Vec3| {
+        let radial = Vec3::new(p.x, p.y, 0.0).normalize();
+        (radial * half_angle.cos() - Vec3::z() * half_angle.sin()).normalize()
+    };
+    let solver = default_design(&mesh, 60.0);
+    let pattern = strips(&mesh, &solver.field(), 60.0);
+    assert!(pattern.verdict.is_acceptable(), "{}", pattern.verdict.message());
+    let error = worst_quad_angle_error(&pattern, 60.0, normal);
+    assert!(error <= 1.5, "a strip plane is {error}° off against the exact normal");
+    assert!(pattern.metrics.max_planar <= 1e-5 && pattern.metrics.max_e_straight <= 1e-3, "{:?}", pattern.metrics);
+}

@@ -1,0 +1,197 @@
+//! Surface optimisation (paper Sec. 3.3, Fig. 17): the level sets of a cylinder's 60°
+//! pseudo-geodesic field are pulled towards a 45° family by moving the surface, the field held
+//! fixed; judged from outside (the level curves resampled at three edge lengths against the
+//! mesh's second-order normals), with the deviation checked by a brute-force closest-point
+//! search written here.
+
+use crate::field_support;
+
+use field_support::{cylinder, perturbed_height};
+use lamella::curves::{extract_level_curves, uniform_levels};
+use lamella::field::{Family, FieldParams, FieldSolver};
+use lamella::mesh::{TriMesh, Vec3};
+use lamella::quality::{family_angles, FamilyAngles, DEFAULT_SPACING_EDGES};
+use lamella::reshape::{alternate, AlternatingParams, ReshapeError, ReshapeParams, ReshapeSolver, ReshapeWeights, Tolerance};
+use std::sync::OnceLock;
+
+/// The cylinder (R = 10, 150°, height 15, 1000 vertices) with its optimised 60° field.
+fn sixty_degree_cylinder() -> &'static (TriMesh, Vec<f64>) {
+    static CYLINDER: OnceLock<(TriMesh, Vec<f64>)> = OnceLock::new();
+    CYLINDER.get_or_init(|| {
+        let mesh = cylinder(1000, 11);
+        let mut solver = FieldSolver::new(&mesh, &perturbed_height(&mesh), FieldParams::pseudo_geodesic(60.0)).expect("valid input");
+        let report = solver.step(300).expect("solver runs");
+        assert!(report.converged, "field not converged");
+        (mesh, solver.field())
+    })
+}
+
+/// The outside measure of ten level curves of `field` on `mesh` against θ.
+fn outside_measure(mesh: &TriMesh, field: &[f64], theta: f64) -> FamilyAngles {
+    let levels = uniform_levels(mesh, field, 10).expect("valid field");
+    let curves = extract_level_curves(mesh, field, &levels).expect("levels in range");
+    let (low, high) = mesh.bounding_box();
+    let spacing = DEFAULT_SPACING_EDGES * mesh.mean_edge_length();
+    family_angles(&curves, Family::PseudoGeodesic { theta_degrees: theta }, spacing, (high - low).norm()).expect("valid curves")
+}
+
+/// Distance from `p` to the segment `a b`.
+fn segment_distance(p: &Vec3, a: &Vec3, b: &Vec3) -> f64 {
+    let ab = b - a;
+    let t = ((p - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0);
+    (p - (a + ab * t)).norm()
+}
+
+/// Distance from `p` to the triangle `a b c`: to its plane where the foot lies inside (all three
+/// edge tests agree with the normal), else to the nearest edge.
+fn triangle_distance(p: &Vec3, a: &Vec3, b: &Vec3, c: &Vec3) -> f64 {
+    let normal = (b - a).cross(&(c - a)).normalize();
+    let foot = p - normal * (p - a).dot(&normal);
+    let inside = [(a, b), (b, c), (c, a)].iter().all(|(u, v)| (*v - *u).cross(&(foot - *u)).dot(&normal) >= 0.0);
+    if inside {
+        (p - foot).norm()
+    } else {
+        segment_distance(p, a, b).min(segment_distance(p, b, c)).min(segment_distance(p, c, a))
+    }
+}
+
+/// Distance of every point to the mesh, by trying every face.
+fn brute_force_distances(points: &[Vec3], mesh: &TriMesh) -> Vec<f64> {
+    let x = mesh.positions();
+    points
+        .iter()
+        .map(|p| mesh.faces().iter().map(|f| triangle_distance(p, &x[f[0] as usize], &x[f[1] as usize], &x[f[2] as usize])).fold(f64::INFINITY, f64::min))
+        .collect()
+}
+
+/// The settings of the cylinder runs: Table 3's λ_angle and λ_close, with λ_fair 0.05 and λ_edge
+/// 0.05 (with Table 3's 0.02 and 2e-3 the same run ends at 4.5° RMS from outside, 23° at worst
+/// near the boundary, its edges stretched by 43 %), and a tolerance of 5 % of the diagonal.
+fn cylinder_params() -> ReshapeParams {
+    let mut params = ReshapeParams::new(45.0);
+    params.weights = ReshapeWeights { fair: 0.05, edge: 0.05, ..ReshapeWeights::default() };
+    params.tolerance = Tolerance::DiagonalFraction(0.05);
+    params
+}
+
+#[test]
+fn sixty_degree_family_moves_towards_forty_five_degrees() {
+    let (mesh, field) = sixty_degree_cylinder();
+    let before = outside_measure(mesh, field, 45.0);
+    // The start is the 60° family: 15° off everywhere.
+    assert!(before.rms_error_degrees > 14.0 && before.straight == 0, "{before:?}");
+    let mut solver = ReshapeSolver::new(mesh, field, cylinder_params()).expect("valid input");
+    let report = solver.step(300).expect("solver runs");
+    assert!(report.converged, "not converged after {} iterations", report.iterations);
+    let moved = solver.mesh();
+    let after = outside_measure(&moved, field, 45.0);
+    let per_curve: Vec<String> = after.curves.iter().map(|c| format!("{:.1}", c.rms_error_degrees)).collect();
+    eprintln!(
+        "{} iterations; star measure {:.2}° RMS; outside {:.2}° RMS, {:.2}° max, per curve [{}]; max deviation {:.3} ({:.2} % of the diagonal), largest edge change {:.1} %",
+        report.iterations,
+        report.angle_error_rms_degrees,
+        after.rms_error_degrees,
+        after.max_error_degrees,
+        per_curve.join(", "),
+        report.max_deviation,
+        100.0 * report.max_deviation / report.tolerance * 0.05,
+        100.0 * report.max_edge_change
+    );
+    // Measured: 2.3° RMS from outside (per curve 0.3–3.7°), 7.6° at worst. The paper's target,
+    // 45° within 1°, is NOT reached: the optimiser's own rows are met to 1.8° RMS at the
+    // vertices, and the curves at the scale of three edges stay further off.
+    assert!(after.rms_error_degrees < 3.0, "outside RMS {}°", after.rms_error_degrees);
+    // The curves stay curves: a straight family would satisfy no P-curve angle (14 of the ~120
+    // resampled points are straight at the model's scale).
+    assert!(after.straight_fraction() < 0.15, "straight fraction {}", after.straight_fraction());
+    assert!(report.max_deviation <= report.tolerance, "deviation {} over the tolerance {}", report.max_deviation, report.tolerance);
+    // Measured 19.3 %.
+    assert!(report.max_edge_change <= 0.25, "edge lengths change by {} %", 100.0 * report.max_edge_change);
+}
+
+#[test]
+fn deviation_figures_are_the_closest_point_distances_to_the_original() {
+    let (mesh, field) = sixty_degree_cylinder();
+    let mut solver = ReshapeSolver::new(mesh, field, cylinder_params()).expect("valid input");
+    let report = solver.step(40).expect("solver runs");
+    let independent = brute_force_distances(&solver.positions(), mesh);
+    let reported = solver.deviations();
+    assert_eq!(reported.len(), mesh.vertex_count());
+    for (v, (a, b)) in reported.iter().zip(&independent).enumerate() {
+        assert!((a - b).abs() <= 1e-9 * (1.0 + b), "vertex {v}: reported {a}, brute force {b}");
+    }
+    let max = independent.iter().copied().fold(0.0, f64::max);
+    let rms = (independent.iter().map(|d| d * d).sum::<f64>() / independent.len() as f64).sqrt();
+    assert!(max > 0.1, "the surface barely moved ({max})");
+    assert!((report.max_deviation - max).abs() <= 1e-9 * max, "max {} vs {max}", report.max_deviation);
+    assert!((report.rms_deviation - rms).abs() <= 1e-9 * rms, "rms {} vs {rms}", report.rms_deviation);
+}
+
+#[test]
+fn a_tight_tolerance_holds() {
+    let (mesh, field) = sixty_degree_cylinder();
+    let mut params = cylinder_params();
+    params.tolerance = Tolerance::Absolute(0.05);
+    let mut solver = ReshapeSolver::new(mesh, field, params).expect("valid input");
+    let report = solver.step(60).expect("solver runs");
+    let independent = brute_force_distances(&solver.positions(), mesh).into_iter().fold(0.0, f64::max);
+    assert!(independent <= 0.05 + 1e-12, "deviation {independent} over 0.05");
+    // The bound was met by the guard on E_close, not because nothing moved.
+    assert!(report.guard > 1.0 && independent > 0.02, "guard {}, deviation {independent}", report.guard);
+}
+
+#[test]
+fn same_input_same_bits() {
+    let (mesh, field) = sixty_degree_cylinder();
+    let run = || {
+        let mut solver = ReshapeSolver::new(mesh, field, cylinder_params()).expect("valid input");
+        solver.step(15).expect("solver runs");
+        solver.positions()
+    };
+    assert_eq!(run(), run());
+}
+
+#[test]
+fn bad_input_names_the_culprit() {
+    let (mesh, field) = sixty_degree_cylinder();
+    let error = |params: ReshapeParams, field: &[f64]| ReshapeSolver::new(mesh, field, params).err().expect("rejected").to_string();
+    let mut nan_theta = cylinder_params();
+    nan_theta.theta_degrees = f64::NAN;
+    assert!(error(nan_theta, field).contains("theta"));
+    let mut negative = cylinder_params();
+    negative.tolerance = Tolerance::DiagonalFraction(-0.01);
+    assert!(error(negative, field).contains("tolerance"));
+    let mut weight = cylinder_params();
+    weight.weights.edge = f64::INFINITY;
+    assert!(error(weight, field).contains("weights.edge"));
+    let mut step = cylinder_params();
+    step.max_vertex_step = 0.0;
+    assert!(error(step, field).contains("max_vertex_step"));
+    assert!(error(cylinder_params(), &field[1..]).contains("values"));
+    let mut broken = field.clone();
+    broken[7] = f64::NAN;
+    assert!(error(cylinder_params(), &broken).contains("vertex 7"));
+    let constant = vec![1.0; mesh.vertex_count()];
+    assert!(matches!(ReshapeSolver::new(mesh, &constant, cylinder_params()), Err(ReshapeError::Field(_))));
+}
+
+#[test]
+fn alternating_schedule_keeps_the_tolerance() {
+    let (mesh, field) = sixty_degree_cylinder();
+    let mut params = AlternatingParams::new(45.0);
+    params.reshape = cylinder_params();
+    params.reshape.tolerance = Tolerance::DiagonalFraction(0.01);
+    params.rounds = 3;
+    params.iterations_per_step = 30;
+    let result = alternate(mesh, field, &params).expect("runs");
+    let after = outside_measure(&result.mesh, &result.field, 45.0);
+    let deviation = brute_force_distances(result.mesh.positions(), mesh).into_iter().fold(0.0, f64::max);
+    let (low, high) = mesh.bounding_box();
+    eprintln!("alternating: {} rounds, converged {}; outside {:.2}° RMS, {:.2}° max, straight fraction {:.3}; deviation {deviation:.3}", result.rounds, result.converged, after.rms_error_degrees, after.max_error_degrees, after.straight_fraction());
+    assert!(deviation <= 0.01 * (high - low).norm() + 1e-12, "deviation {deviation}");
+    assert!((result.reshape_report.max_deviation - deviation).abs() <= 1e-9 * deviation.max(1.0));
+    // The field steps are free to reach 45° on the cylinder (the family exists there). Measured:
+    // 0.49° RMS, 1.4° at worst; the straight points are those of the short corner curves.
+    assert!(after.rms_error_degrees < 1.0 && after.max_error_degrees < 2.0, "{after:?}");
+    assert!(after.measured > 50 && after.straight_fraction() < 0.25, "measured {}, straight {}", after.measured, after.straight);
+}
