@@ -132,6 +132,9 @@
 // Most points of the u-lines of `lml_brauner_u_lines`, all lines together.
 #define LML_MAX_U_LINE_POINTS 1000000
 
+// Most strips `lml_shading_strips` builds.
+#define LML_MAX_SHADING_STRIPS 1000
+
 // Result of an `lml_*` call. `LML_STATUS_OK`, `LML_STATUS_MORE`, `LML_STATUS_CONVERGED` and
 // `LML_STATUS_NO_ACCEPTABLE_FAMILY` are successes (≥ 0: the outputs are valid); every failure
 // is negative, and `lml_last_error_message()` then says what went wrong and names the
@@ -226,6 +229,11 @@ typedef struct LmlReshape LmlReshape;
 // until it returns `LML_STATUS_OK`, read its candidates, take the field with
 // `lml_search_field`, release it with `lml_search_free`.
 typedef struct LmlSearch LmlSearch;
+
+// A shading design session (opaque): a copy of the mesh, the site, the labels, the solver
+// state, and the strips' θ and the blocked fractions of the last strips and evaluation.
+// Create it with `lml_shading_new`, release it with `lml_shading_free`.
+typedef struct LmlShading LmlShading;
 
 // The quad net and nodes of two strip families (opaque). Create it with `lml_strip_net_new`,
 // release it with `lml_strip_net_free`.
@@ -671,6 +679,84 @@ typedef struct LmlReshapeReport {
   double energy_edge;
 } LmlReshapeReport;
 
+// Where the building stands, how the model is oriented and when the shading is for (filled by
+// `lml_shading_site_default`, then edited). Angles in degrees, hours 0–24.
+typedef struct LmlShadingSite {
+  // Geographic latitude, north positive, in [−90, 90].
+  double latitude_degrees;
+  // North and up in model coordinates (north is made horizontal; not parallel to up).
+  double north[3];
+  double up[3];
+  // With `clock_time` 1: longitude (east positive, [−180, 180]) and time zone (hours east of
+  // UTC, [−14, 14]) of clock-time hours; ignored with `clock_time` 0 (true solar time).
+  double longitude_degrees;
+  double time_zone_hours;
+  // Daily hours whose sun the block vertices block (`first < last`).
+  double first_hour;
+  double last_hour;
+  // Daily hours whose sun the pass vertices let through.
+  double pass_first_hour;
+  double pass_last_hour;
+  // With `direct_region` 1: the block region `R_l` as δ and γ intervals (Eq. 24; δ within
+  // (−90, 90)) instead of from the dates and hours.
+  double delta_degrees[2];
+  double gamma_degrees[2];
+  // Dates `first_month-first_day .. last_month-last_day`, both included (may run over the new year).
+  uint32_t first_month;
+  uint32_t first_day;
+  uint32_t last_month;
+  uint32_t last_day;
+  // 0: hours are true solar time; 1: clock time of `longitude_degrees` and `time_zone_hours`.
+  uint32_t clock_time;
+  // 0: the block region from the dates and hours; 1: from `delta_degrees` and `gamma_degrees`.
+  uint32_t direct_region;
+} LmlShadingSite;
+
+// A vertex label (`labels` of `lml_shading_new`).
+typedef uint32_t LmlShadingLabel;
+
+// The state of a shading optimisation after `lml_shading_step` (written by the library; the
+// caller owns the struct). Energies unweighted on the problem scaled to mean edge length 1.
+typedef struct LmlShadingReport {
+  // Iterations run since the session was created.
+  uint64_t iterations;
+  // 1 when converged (further steps do nothing), else 0.
+  uint64_t converged;
+  // Vertices with a light term (blocking, letting through), and those of them where the level
+  // curve is not regular.
+  uint64_t block_vertices;
+  uint64_t pass_vertices;
+  uint64_t singular_vertices;
+  // 1 when the start was the constant-slope family of the slope vote (Fig. 34–35), 0 when it
+  // was a height field (no usable vote, or no blocking vertex).
+  uint64_t constant_slope_start;
+  // The slope of that family against the earth axis in degrees (0 for a height field).
+  double start_slope_degrees;
+  // `E_fair`, `E_grad`, `E_block` (Eq. 26), `E_light` (Eq. 27), the constraints, and the
+  // weighted total minimised (Eq. 25).
+  double energy_fair;
+  double energy_grad;
+  double energy_block;
+  double energy_light;
+  double energy_constraints;
+  double energy_total;
+} LmlShadingReport;
+
+// The outcome of `lml_shading_evaluate`: blocked fractions of the direct-sun hours, −1 for a
+// region without a sample the sun reaches.
+typedef struct LmlSunPathSummary {
+  // Block vertices against the block hours' suns, pass vertices against the pass hours'
+  // suns, free vertices against the block hours' suns.
+  double block_fraction;
+  double pass_fraction;
+  double free_fraction;
+  // Sun positions above the horizon (every hour of every day) of the block and pass hours.
+  uint64_t block_suns;
+  uint64_t pass_suns;
+  // Rays cast.
+  uint64_t rays;
+} LmlSunPathSummary;
+
 // Pseudo-geodesics: the binormal keeps the angle `theta_degrees` to the surface normal
 // (`E_angle`, paper Eq. 8–10).
 #define LML_FAMILY_PSEUDO_GEODESIC 0
@@ -730,6 +816,15 @@ typedef struct LmlReshapeReport {
 
 // The curve reached `LmlTraceOptions.max_points`.
 #define LML_TRACE_STOP_POINT_LIMIT 3
+
+// The vertex's strips block the light of the block region (`E_block`, Eq. 26).
+#define LML_SHADING_BLOCK 0
+
+// The vertex's strips let the light of the pass region through (`E_light`, Eq. 27).
+#define LML_SHADING_PASS 1
+
+// A transition vertex: fairness and gradient terms only.
+#define LML_SHADING_FREE 2
 
 #ifdef __cplusplus
 extern "C" {
@@ -1905,6 +2000,109 @@ LmlStatus lml_brauner_u_lines(double mu,
                               double *out,
                               size_t capacity,
                               size_t *needed);
+
+// Fills `*out` with the defaults: latitude 47.4° (Zurich), north +y, up +z, 1 June to
+// 31 August, 10 to 16 h true solar time for blocking and letting through, the region from the
+// dates and hours. Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL `out`).
+LmlStatus lml_shading_site_default(struct LmlShadingSite *out);
+
+// Starts a shading design on `mesh` for `site` (Table 2 weights: blocking ones when some vertex
+// blocks), from the paper's start (Sec. 6, Fig. 34–35): when some vertex blocks, the
+// constant-slope family about the earth axis of the slope most faces vote for (the height along
+// the earth axis when no face votes or none is steep enough for it; `LmlShadingReport` says
+// which), else the height across the central light of the pass region.
+//
+// - `mesh`: the surface (copied).
+// - `site`: the site, dates and hours (copied); the block region `R_l` comes from the dates and
+//   hours (sun every 15 minutes) unless `site->direct_region` is 1; the pass region always from
+//   the dates and the pass hours.
+// - `labels`: `n` labels, one per vertex (`LML_SHADING_BLOCK`, `_PASS`, `_FREE`); not all free.
+// - `ring`: edge rings on each side of a block/pass border made free (0 to 100).
+// - `out`: receives the new session (release with `lml_shading_free`); NULL on failure.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `n` ≠ vertex count, a
+// label out of range, a site value out of range or hours more than 6 h from solar noon, the sun
+// never up; the message names the element); `LML_STATUS_SINGULAR_FIELD` (the start field is
+// constant).
+LmlStatus lml_shading_new(const struct LmlMesh *mesh,
+                          const struct LmlShadingSite *site,
+                          const LmlShadingLabel *labels,
+                          size_t n,
+                          uint32_t ring,
+                          struct LmlShading **out);
+
+// Releases a session. NULL is accepted and ignored. The handle must not be used again.
+void lml_shading_free(struct LmlShading *shading);
+
+// Runs at most `max_iterations` iterations and writes the state to `*report` (may be NULL).
+//
+// Returns `LML_STATUS_MORE` (step again), `LML_STATUS_CONVERGED`, `LML_STATUS_INVALID_ARGUMENT`
+// (NULL or misaligned pointer) or `LML_STATUS_DID_NOT_CONVERGE` (an iteration failed
+// numerically; the field keeps its last good state).
+LmlStatus lml_shading_step(struct LmlShading *shading,
+                           uint32_t max_iterations,
+                           struct LmlShadingReport *report);
+
+// Writes the state after the last step (or after creation) to `*report`.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_shading_report(const struct LmlShading *shading, struct LmlShadingReport *report);
+
+// Copies the field (one value per vertex, in the scale of the start field) into `values` with
+// the two-call pattern: `*needed` receives the vertex count; with `capacity` below it nothing is
+// copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned (`values` may be NULL then). Returns
+// `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT` (NULL
+// session or `needed`).
+LmlStatus lml_shading_field(const struct LmlShading *shading,
+                            double *values,
+                            size_t capacity,
+                            size_t *needed);
+
+// Builds strips of `width` (mesh units, > 0) along `count` (1 to `LML_MAX_SHADING_STRIPS`)
+// equally spaced level curves of the current field, each curve with its own θ (the median
+// angle between the optimised binormal and the surface normal along it), judged with
+// `tolerance_degrees` in (0, 180) against that θ. The strips are a new `LmlStrips` handle
+// (read it with the `lml_strips_*` functions, release it with `lml_strips_free`); their θ are
+// kept for `lml_shading_thetas`.
+//
+// Returns `LML_STATUS_OK` (every strip within the tolerance of its θ, no flipped quad);
+// `LML_STATUS_NO_ACCEPTABLE_FAMILY` (the strips are built and `*out` is valid, but some quad
+// misses its curve's θ by more than the tolerance, or is flipped, or no strip could be built:
+// `lml_last_error_message()` names the worst strip and quad, `lml_strips_verdict` gives the
+// numbers); `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `count`, `width` or
+// `tolerance_degrees` out of range, named).
+LmlStatus lml_shading_strips(struct LmlShading *shading,
+                             uint32_t count,
+                             double width,
+                             double tolerance_degrees,
+                             struct LmlStrips **out);
+
+// Copies θ in degrees of every strip of the last `lml_shading_strips` (in the strips' order;
+// none before) into `values` with the two-call pattern as `lml_shading_field`.
+LmlStatus lml_shading_thetas(const struct LmlShading *shading,
+                             double *values,
+                             size_t capacity,
+                             size_t *needed);
+
+// The sun-path check of `strips` (any strips on this session's surface, e.g. from
+// `lml_shading_strips`): samples `offset` (mesh units, > 0) behind every vertex, a ray towards
+// the sun every hour of every day of the site's dates when the sun is in front of the surface
+// there, tested against the strips. Writes the region fractions to `*summary` (may be NULL) and
+// keeps the per-vertex fractions for `lml_shading_vertex_fractions`.
+//
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `offset` out of
+// range, the sun never up; named).
+LmlStatus lml_shading_evaluate(struct LmlShading *shading,
+                               const struct LmlStrips *strips,
+                               double offset,
+                               struct LmlSunPathSummary *summary);
+
+// Copies the blocked fraction of every vertex's direct-sun hours of its own region (−1 where
+// the sun never reaches it) of the last `lml_shading_evaluate` (none before) into `values`
+// with the two-call pattern as `lml_shading_field`.
+LmlStatus lml_shading_vertex_fractions(const struct LmlShading *shading,
+                                       double *values,
+                                       size_t capacity,
+                                       size_t *needed);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -42,6 +42,9 @@ namespace Lamella.Tests
             { "LmlNetReport", typeof(NetReportRecord) },
             { "LmlReshapeReport", typeof(ReshapeReportRecord) },
             { "LmlNode", typeof(NodeRecord) },
+            { "LmlShadingSite", typeof(ShadingSite) },
+            { "LmlShadingReport", typeof(ShadingReportRecord) },
+            { "LmlSunPathSummary", typeof(SunPathSummaryRecord) },
         };
 
         /// <summary>Integer typedefs of the header and the managed enum each is carried by (also in arrays).</summary>
@@ -51,6 +54,7 @@ namespace Lamella.Tests
             { "LmlFamily", typeof(Family) },
             { "LmlStripWarnings", typeof(StripWarnings) },
             { "LmlTraceStop", typeof(TraceStop) },
+            { "LmlShadingLabel", typeof(ShadingLabel) },
         };
 
         private static Dictionary<string, MethodInfo> Imports() =>
@@ -156,7 +160,7 @@ namespace Lamella.Tests
             switch (type)
             {
                 case "uint8_t": return new Layout(1, 1);
-                case "int32_t": case "uint32_t": case "LmlStatus": case "LmlFamily": case "LmlTraceStop": return new Layout(4, 4);
+                case "int32_t": case "uint32_t": case "LmlStatus": case "LmlFamily": case "LmlTraceStop": case "LmlShadingLabel": return new Layout(4, 4);
                 case "int64_t": case "uint64_t": case "double": case "LmlStripWarnings": return new Layout(8, 8);
                 case "size_t": return new Layout(IntPtr.Size, IntPtr.Size);
             }
@@ -219,6 +223,7 @@ namespace Lamella.Tests
             AssertEnumMatches(typeof(TraceStop), Header.ConstantsPascal("LML_TRACE_STOP_"));
             AssertEnumMatches(typeof(StartKind), Header.ConstantsPascal("LML_START_"));
             AssertEnumMatches(typeof(FabricationText), Header.ConstantsPascal("LML_FABRICATION_TEXT_"));
+            AssertEnumMatches(typeof(ShadingLabel), Header.ConstantsPascal("LML_SHADING_"));
             Assert.AreEqual(Header.FloatConstants()["LML_DEFAULT_CORNER_TURN_DEGREES"], BoundaryStarts.DefaultCornerTurnDegrees);
             Assert.AreEqual(Header.Constants()["LML_ABI_VERSION"], (long)Library.BindingAbiVersion);
         }

@@ -30,6 +30,12 @@ namespace Lamella
             if (curves == null) throw new ArgumentNullException(nameof(curves));
             StripsHandle handle;
             Status status = Native.Check(NativeMethods.lml_strips_new(curves.Handle, ref parameters, out handle));
+            return FromNative(handle, status);
+        }
+
+        /// <summary>Strips the library built on another call (e.g. <see cref="ShadingSolver.BuildStrips"/>) that returned <paramref name="status"/>.</summary>
+        internal static Strips FromNative(StripsHandle handle, Status status)
+        {
             // Read at once: the message belongs to the last call on this thread.
             string message = status == Status.NoAcceptableFamily ? Utf8.FromNative(NativeMethods.lml_last_error_message()) : string.Empty;
             return new Strips(handle, message);

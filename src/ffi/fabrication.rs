@@ -184,7 +184,7 @@ pub unsafe extern "C" fn lml_fabrication_new(
             material: Material { name: "custom".into(), youngs_modulus: m.youngs_modulus, shear_modulus: m.shear_modulus, allowable_stress: m.allowable_stress },
             thickness,
             stock: Stock { length: s.length, width, overlap: s.overlap, gap: s.gap },
-            theta_degrees: Some(strips.theta_degrees),
+            theta_degrees: strips.theta_degrees,
         };
         let input: Vec<FabricationStrip> = pattern.strips.iter().enumerate().map(|(i, s)| FabricationStrip::from_rectifying(&format!("strip_{i}"), s)).collect();
         let plan = plan_fabrication(&input, &params)?;

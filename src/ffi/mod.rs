@@ -14,8 +14,9 @@
 //! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes; constant-slope
 //! families (Sec. 5.2.3) with their start field and reachable region; and nets of two
 //! families ([`LmlNet`], paper Sec. 4.1) with their quad net and nodes ([`LmlStripNet`]); surface optimisation ([`LmlReshape`], Sec. 3.3);
-//! the Brauner surface of Fig. 32 with its exact asymptotic u-lines; and the interactive 3D
-//! viewer page of strips (`lml_strips_view_html`).
+//! shading designs ([`LmlShading`], Sec. 6: site, labels, strips with one θ per curve, the
+//! sun-path check); the Brauner surface of Fig. 32 with its exact asymptotic u-lines; and the
+//! interactive 3D viewer page of strips (`lml_strips_view_html`).
 //!
 //! The header is generated from this module by cbindgen (configuration in `cbindgen.toml`);
 //! `tests/ffi_header.rs` fails when the committed header is stale and rewrites it when
@@ -57,6 +58,7 @@ mod strip_net;
 mod view;
 mod reshape;
 mod surfaces;
+mod shading;
 
 pub use boundary_starts::*;
 pub use curves::*;
@@ -73,6 +75,7 @@ pub use mesh::*;
 pub use net::*;
 pub use report::*;
 pub use reshape::*;
+pub use shading::*;
 pub use search::*;
 pub use session::*;
 pub use slope::*;
@@ -100,5 +103,6 @@ mod tests {
         movable::<LmlStrips>();
         movable::<LmlGuides>();
         movable::<LmlFabrication>();
+        movable::<LmlShading>();
     }
 }

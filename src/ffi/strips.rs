@@ -24,8 +24,9 @@ use crate::strips::{rectifying_strips, RectifyingStrip, StripPattern};
 /// both vertex arrays. Three offset tables (points, vertices, quads) cut the arrays per strip.
 pub struct LmlStrips {
     pub(crate) pattern: StripPattern,
-    /// θ of the strips' family in degrees (from their parameters), for the bill of materials.
-    pub(crate) theta_degrees: f64,
+    /// θ of the strips' family in degrees (from their parameters), for the bill of materials;
+    /// `None` for shading strips (one θ per curve).
+    pub(crate) theta_degrees: Option<f64>,
 }
 
 /// Builds a rectifying strip on every polyline of `curves` (in parallel; the result does not
@@ -65,7 +66,7 @@ pub unsafe extern "C" fn lml_strips_new(curves: *const LmlCurves, params: *const
             set_last_error(&pattern.verdict.message());
             LmlStatus::NoAcceptableFamily
         };
-        out.set_owned(LmlStrips { pattern, theta_degrees: params.theta_degrees });
+        out.set_owned(LmlStrips { pattern, theta_degrees: Some(params.theta_degrees) });
         Ok(status)
     })
 }

@@ -65,7 +65,7 @@ pub unsafe extern "C" fn lml_strips_view_html(
             Some(unsafe { input(utilisation, utilisation_count, "utilisation") }?)
         };
         let lines = curves.map_or(&[][..], |c| c.curves.as_slice());
-        let mut scene = ViewScene::of_families(title, curves.map(|c| &*c.mesh), &[(&family_name(strips.theta_degrees), lines, &pattern.strips)]);
+        let mut scene = ViewScene::of_families(title, curves.map(|c| &*c.mesh), &[(&strips.theta_degrees.map_or_else(|| "shading strips".to_string(), family_name), lines, &pattern.strips)]);
         if let Some(values) = utilisation {
             scene.strips.iter_mut().zip(values).for_each(|(s, u)| s.utilisation = Some(*u));
         }

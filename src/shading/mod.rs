@@ -6,6 +6,7 @@
 //! constant-slope initialisation (Fig. 34–35); the sun-path evaluation casts the sun's rays
 //! through the strips ([`evaluate_sun_path`]), which is not in the paper.
 
+mod check;
 mod common_slope;
 mod earth_frame;
 mod error;
@@ -19,9 +20,11 @@ mod report;
 mod site;
 mod solar_position;
 mod solver;
+mod start;
 mod strips;
 mod sun_path;
 
+pub use check::{sun_path_check, SunPathCheck, CHECK_HOUR_STEP};
 pub use common_slope::{most_common_slope, SlopeVote, SLOPE_BIN_DEGREES, STEEP_FACE_DEGREES};
 pub use earth_frame::{light_angles, light_direction, EarthFrame};
 pub use error::ShadingError;
@@ -34,5 +37,6 @@ pub use report::{ShadingEnergies, ShadingReport};
 pub use site::{DateRange, HourRange, MonthDay, Site};
 pub use solar_position::{day_of_year, solar_position, Clock, SolarPosition, DAYS_PER_YEAR};
 pub use solver::ShadingSolver;
+pub use start::{default_start, ShadingStart, StartKind};
 pub use strips::{shading_strips, ShadingStrips};
 pub use sun_path::{sun_samples, SunSample};

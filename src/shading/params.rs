@@ -2,6 +2,7 @@
 
 use super::earth_frame::EarthFrame;
 use super::error::ShadingError;
+use super::labels::VertexLabel;
 use super::light_region::LightRegion;
 use crate::solver::LmOptions;
 
@@ -30,6 +31,12 @@ impl ShadingWeights {
     /// block vertex); constraints at 1.
     pub fn passing() -> ShadingWeights {
         ShadingWeights { fair: 0.01, grad: 0.1, light_block: 1e-3, light_pass: 3e-4, constraint: 1.0 }
+    }
+
+    /// [`ShadingWeights::blocking`] when some vertex of `labels` blocks, else
+    /// [`ShadingWeights::passing`].
+    pub fn for_labels(labels: &[VertexLabel]) -> ShadingWeights {
+        if labels.contains(&VertexLabel::Block) { ShadingWeights::blocking() } else { ShadingWeights::passing() }
     }
 
     pub(crate) fn validate(&self) -> Result<(), ShadingError> {

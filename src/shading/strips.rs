@@ -20,6 +20,34 @@ pub struct ShadingStrips {
     pub pattern: StripPattern,
 }
 
+impl ShadingStrips {
+    /// What the strips miss (one line), `None` when they are acceptable: how many miss their
+    /// curve's θ by more than the tolerance or have flipped quads, and the worst quad.
+    pub fn miss(&self) -> Option<String> {
+        let verdict = &self.pattern.verdict;
+        if verdict.is_acceptable() {
+            return None;
+        }
+        if verdict.empty {
+            return Some("no strip could be built".to_string());
+        }
+        let mut parts = Vec::new();
+        if !verdict.strips_missing_theta.is_empty() {
+            let n = verdict.strips_missing_theta.len();
+            let (noun, verb) = if n == 1 { ("strip", "misses its") } else { ("strips", "miss their") };
+            parts.push(format!("{n} {noun} {verb} curve's θ by more than {}°", verdict.tolerance_degrees));
+        }
+        if !verdict.strips_with_flipped_quads.is_empty() {
+            let n = verdict.strips_with_flipped_quads.len();
+            parts.push(format!("{n} {}", if n == 1 { "strip has flipped quads" } else { "strips have flipped quads" }));
+        }
+        let worst = verdict.worst.map_or(String::new(), |w| {
+            format!(" (worst: strip {} quad {} at ({:.3}, {:.3}, {:.3}), {:.2}° off)", w.strip, w.quad, w.point[0], w.point[1], w.point[2], w.error_degrees)
+        });
+        Some(format!("{}{worst}", parts.join(", ")))
+    }
+}
+
 /// Strips along `count` equally spaced level curves of `field` with per-vertex `binormals`
 /// ([`super::ShadingSolver::binormals`]; zero where undefined), of `width`, judged
 /// with `tolerance_degrees` (the strips' verdict). Errors name the parameter.

@@ -59,4 +59,9 @@ void test_reshape(const Cylinder *cylinder);
  * about its axis (helices, straight in the development at the slope), and the boundary of the
  * reachable region about an axis across it (the ruling where the tangent planes have the slope). */
 void test_slope(const Cylinder *cylinder);
+
+/* Shading designs (Sec. 6) on a small vertical facade: every invalid input, stepping, strips
+ * with one theta per curve against the noon sun's elevation, the sun-path check's blocked
+ * fraction, and the strips' verdict status on a twisted facade. */
+void test_shading(void);
 #endif

@@ -6,8 +6,8 @@
 use lamella::field::level_frame;
 use lamella::mesh::{TriMesh, Vec3};
 use lamella::shading::{
-    day_of_year, evaluate_sun_path, light_direction, most_common_slope, samples_behind, shading_strips, solar_position, strip_triangles, sun_samples,
-    with_transition_ring, Clock, DateRange, EarthFrame, HourRange, LightRegion, MonthDay, ShadingParams, ShadingSolver, Site, VertexLabel,
+    day_of_year, default_start, evaluate_sun_path, light_direction, most_common_slope, samples_behind, shading_strips, solar_position, strip_triangles, sun_samples,
+    with_transition_ring, Clock, DateRange, EarthFrame, HourRange, LightRegion, MonthDay, ShadingParams, ShadingSolver, Site, StartKind, VertexLabel,
 };
 use lamella::surfaces::{planar_disk, PlanarPatch};
 
@@ -216,4 +216,40 @@ fn the_slope_vote_on_a_vertical_facade_picks_the_slope_orthogonal_to_the_noon_su
     assert_eq!(vote.voting_faces, facade().face_count());
     let frame = EarthFrame::new(LATITUDE, Vec3::y(), Vec3::z()).unwrap();
     assert!((frame.to_earth(&Vec3::x()) - Vec3::y()).norm() < 1e-12, "east is the frame's y axis");
+}
+
+#[test]
+fn the_default_start_is_the_constant_slope_family_of_the_voted_slope() {
+    // A vertical facade turned 30° towards the east (normal (sin 30°, −cos 30°, 0)): the tangent
+    // orthogonal to the central noon light, n × l_c, rises against the equatorial plane, so the
+    // vote's slope is not 0 and its sign is checked.
+    let along = Vec3::new(30f64.to_radians().cos(), 30f64.to_radians().sin(), 0.0);
+    let disk = planar_disk(&PlanarPatch { radius: 5.0, target_vertices: 300, irregularity: 0.3, seed: 5 }).unwrap();
+    let positions = disk.positions.iter().map(|p| along * p.x + Vec3::z() * p.y).collect();
+    let mesh = TriMesh::from_vertices_and_faces(positions, disk.faces).unwrap();
+    let s = noon_site();
+    let frame = s.frame().unwrap();
+    let region = LightRegion::of_site(&s).unwrap();
+    let axis = frame.axes[2];
+    let normal = mesh.face_normals()[0];
+    let rise = |t: Vec3| {
+        let t = if t.dot(&axis.cross(&normal)) < 0.0 { -t } else { t };
+        t.normalize().dot(&axis).asin().to_degrees()
+    };
+    let expected = rise(normal.cross(&frame.to_model(&region.central_direction())));
+    assert!(expected.abs() > 5.0, "a slope to tell the signs apart: {expected}");
+    let start = default_start(&mesh, &ShadingParams::new(frame, region), &vec![VertexLabel::Block; mesh.vertex_count()]);
+    let StartKind::ConstantSlope { slope_degrees } = start.kind else { panic!("start {:?}", start.kind) };
+    assert!((slope_degrees - expected).abs() <= 5.0, "voted {slope_degrees}°, central light's {expected}°");
+    // The start field's level curves have that slope on every face (the plane's exact normal).
+    let mut worst = 0.0f64;
+    for face in mesh.faces() {
+        let [p0, p1, p2] = face.map(|v| mesh.positions()[v as usize]);
+        let [f0, f1, f2] = face.map(|v| start.field[v as usize]);
+        let (e1, e2) = (p1 - p0, p2 - p0);
+        let n = e1.cross(&e2).normalize();
+        let gradient = -((n.cross(&e2)) * (f1 - f0) + e1.cross(&n) * (f2 - f0));
+        worst = worst.max((rise(n.cross(&gradient)) - slope_degrees).abs());
+    }
+    assert!(worst < 0.5, "level curves up to {worst}° off the slope {slope_degrees}°");
 }

@@ -28,6 +28,16 @@ namespace Lamella.Conversion
                 min = Math.Min(min, v);
                 max = Math.Max(max, v);
             }
+            return Argb(values, min, max);
+        }
+
+        /// <summary>
+        /// One opaque ARGB colour per value over the fixed range [<paramref name="min"/>, <paramref name="max"/>] (values
+        /// outside are clamped); NaN gets <see cref="Missing"/>, and an empty range the middle stop.
+        /// </summary>
+        public static int[] Argb(double[] values, double min, double max)
+        {
+            if (values == null) throw new ArgumentNullException(nameof(values));
             var colours = new int[values.Length];
             int last = Stops.GetLength(0) - 1;
             for (int i = 0; i < values.Length; i++)
@@ -38,7 +48,7 @@ namespace Lamella.Conversion
                     colours[i] = Missing;
                     continue;
                 }
-                double t = max > min ? (v - min) / (max - min) * last : 0.5 * last;
+                double t = max > min ? Math.Max(0.0, Math.Min(1.0, (v - min) / (max - min))) * last : 0.5 * last;
                 int k = Math.Min((int)Math.Floor(t), last - 1);
                 double f = t - k;
                 int r = (int)Math.Round(Stops[k, 0] + f * (Stops[k + 1, 0] - Stops[k, 0]));

@@ -71,4 +71,10 @@ namespace Lamella.Interop
         public ReshapeHandle() { }
         protected override bool ReleaseHandle() { NativeMethods.lml_reshape_free(handle); return true; }
     }
+
+    internal sealed class ShadingHandle : LamellaHandle
+    {
+        public ShadingHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_shading_free(handle); return true; }
+    }
 }

@@ -121,6 +121,25 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_reshape_deviations(ReshapeHandle reshape, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
 
+        // LmlShading.
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_shading_site_default(out ShadingSite site);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_shading_new(MeshHandle mesh, ref ShadingSite site, ShadingLabel[] labels, UIntPtr n, uint ring, out ShadingHandle shading);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_shading_free(IntPtr shading);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_shading_step(ShadingHandle shading, uint maxIterations, out ShadingReportRecord report);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_shading_report(ShadingHandle shading, out ShadingReportRecord report);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_shading_field(ShadingHandle shading, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_shading_strips(ShadingHandle shading, uint count, double width, double toleranceDegrees, out StripsHandle strips);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_shading_thetas(ShadingHandle shading, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_shading_evaluate(ShadingHandle shading, StripsHandle strips, double offset, out SunPathSummaryRecord summary);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_shading_vertex_fractions(ShadingHandle shading, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_field_save(FieldHandle field, [Out] byte[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)]

@@ -119,4 +119,35 @@ namespace Lamella.Interop
         public double EnergyClose;
         public double EnergyEdge;
     }
+
+    /// <summary><c>LmlShadingReport</c>: the state of a shading optimisation after a step. The binding hands it out as <see cref="ShadingReport"/>.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct ShadingReportRecord
+    {
+        public ulong Iterations;
+        public ulong Converged;
+        public ulong BlockVertices;
+        public ulong PassVertices;
+        public ulong SingularVertices;
+        public ulong ConstantSlopeStart;
+        public double StartSlopeDegrees;
+        public double EnergyFair;
+        public double EnergyGrad;
+        public double EnergyBlock;
+        public double EnergyLight;
+        public double EnergyConstraints;
+        public double EnergyTotal;
+    }
+
+    /// <summary><c>LmlSunPathSummary</c>: the region fractions of a sun-path check (−1: no sample the sun reaches). Handed out as <see cref="SunPathSummary"/>.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct SunPathSummaryRecord
+    {
+        public double BlockFraction;
+        public double PassFraction;
+        public double FreeFraction;
+        public ulong BlockSuns;
+        public ulong PassSuns;
+        public ulong Rays;
+    }
 }

@@ -539,6 +539,10 @@ pub struct ShadeArgs {
     /// Largest blocked fraction of the direct-sun hours in the pass region; above it, exit 3.
     #[arg(long, value_name = "FRACTION", default_value_t = 0.2)]
     pub max_blocked_pass: f64,
+    /// Largest angle error of a strip quad in degrees against its own curve's θ, between 0 and
+    /// 180 exclusive: above it the command exits 3 (the strips' verdict, as `design`).
+    #[arg(long, value_name = "DEGREES", default_value_t = 2.0, allow_negative_numbers = true)]
+    pub tolerance: f64,
     #[command(flatten)]
     pub out: OutArgs,
     #[command(flatten)]

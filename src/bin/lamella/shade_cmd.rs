@@ -2,9 +2,10 @@
 //! region (Eq. 24); the field is optimised for E_block / E_light (Eq. 25–27) with per-vertex
 //! labels; strips are built along its level curves; then the sun-path check casts the hourly
 //! sun rays from points just behind the surface through the strips and reports the blocked
-//! fraction of the direct-sun hours per region (exit 3 when a region misses its fraction).
+//! fraction of the direct-sun hours per region. Exit 3 when a region misses its fraction or when
+//! a strip quad misses its curve's θ by more than `--tolerance` (the strips' verdict of `design`).
 use crate::args::ShadeArgs;
-use crate::config::{out_of_range, parse_vector, DEFAULT_OUT, MAX_ITERATIONS_LIMIT, MAX_STRIPS};
+use crate::config::{check_tolerance, out_of_range, parse_vector, DEFAULT_OUT, MAX_ITERATIONS_LIMIT, MAX_STRIPS};
 use crate::error::{CliError, CliResult};
 use crate::field_files::field_csv;
 use crate::mesh_input::{load_mesh, mesh_name};
@@ -18,10 +19,10 @@ use crate::svg::shading::shading_svg;
 use crate::svg::sunpath::sunpath_svg;
 use lamella::curves::uniform_levels;
 use lamella::input::clip;
-use lamella::mesh::{TriMesh, Vec3};
+use lamella::mesh::TriMesh;
 use lamella::shading::{
-    evaluate_sun_path, most_common_slope, samples_behind, shading_strips, strip_triangles, sun_samples, with_transition_ring, Clock, DateRange, HourRange,
-    LightRegion, MonthDay, ShadingParams, ShadingSolver, ShadingWeights, Site, SunPathEvaluation, SunSample, VertexLabel,
+    default_start, most_common_slope, shading_strips, sun_path_check, with_transition_ring, Clock, DateRange, HourRange,
+    LightRegion, MonthDay, ShadingParams, ShadingSolver, ShadingStrips, ShadingWeights, Site, StartKind, SunPathEvaluation, SunSample, VertexLabel,
 };
 use serde_json::{json, Value};
 use std::path::PathBuf;
@@ -29,8 +30,6 @@ use std::time::Instant;
 
 /// Iterations per `step` between progress notes.
 const STEP: usize = 10;
-/// Hours between the sun rays of the evaluation (every day of the dates).
-const SUN_HOUR_STEP: f64 = 1.0;
 /// Default sample offset behind the surface, as a fraction of the curve spacing.
 const OFFSET_PER_SPACING: f64 = 0.05;
 
@@ -77,6 +76,7 @@ fn check(args: &ShadeArgs) -> CliResult<()> {
     if args.ring > 100 {
         return Err(out_of_range("ring", args.ring, "0 to 100"));
     }
+    check_tolerance(args.tolerance)?;
     Ok(())
 }
 
@@ -128,10 +128,9 @@ pub fn run(args: &ShadeArgs) -> CliResult<()> {
     let target: PathBuf = args.out.out.clone().unwrap_or_else(|| PathBuf::from(DEFAULT_OUT));
     let out = OutputDir::create(&target, args.out.force)?;
 
-    let blocks = labels.contains(&VertexLabel::Block);
-    let weights = if blocks { ShadingWeights::blocking() } else { ShadingWeights::passing() };
+    let weights = ShadingWeights::for_labels(&labels);
     let params = ShadingParams { pass_region, weights, ..ShadingParams::new(frame, block_region) };
-    let (start, start_description) = start_field(&mesh, args, &frame, &pass_region, blocks)?;
+    let (start, start_description) = start_field(&mesh, args, &params, &labels)?;
     let vote = most_common_slope(&mesh, &frame, &block_region);
     let mut solver = ShadingSolver::new(&mesh, &start, &labels, params).map_err(shading_error)?;
     note(
@@ -158,23 +157,13 @@ pub fn run(args: &ShadeArgs) -> CliResult<()> {
     let field = solver.field();
     let spacing = curve_spacing(&mesh, &field, args.strips)?;
     let width = width.unwrap_or(spacing);
-    let strips = shading_strips(&mesh, &field, &solver.binormals(), args.strips, width, 2.0).map_err(shading_error)?;
-    let block_suns = sun_samples(&site, 1, SUN_HOUR_STEP).map_err(shading_error)?;
-    let pass_suns = sun_samples(&pass_site, 1, SUN_HOUR_STEP).map_err(shading_error)?;
+    let strips = shading_strips(&mesh, &field, &solver.binormals(), args.strips, width, args.tolerance).map_err(shading_error)?;
     let offset = offset.unwrap_or(OFFSET_PER_SPACING * spacing);
-    let triangles = strip_triangles(&strips.pattern.strips);
     let evaluation_started = Instant::now();
-    let samples = samples_behind(&mesh, &labels, &block_suns, offset).map_err(shading_error)?;
-    let block_eval = evaluate_sun_path(&triangles, &samples, &block_suns).map_err(shading_error)?;
-    let pass_eval = evaluate_sun_path(&triangles, &samples, &pass_suns).map_err(shading_error)?;
+    let check = sun_path_check(&mesh, &labels, &strips.pattern.strips, &site, &pass_site, offset).map_err(shading_error)?;
     let evaluation_seconds = evaluation_started.elapsed().as_secs_f64();
-    // Per vertex: its own region's suns.
-    let fractions: Vec<Option<f64>> = labels
-        .iter()
-        .enumerate()
-        .map(|(v, l)| if *l == VertexLabel::Pass { pass_eval.sample_fractions[v] } else { block_eval.sample_fractions[v] })
-        .collect();
-    let (block_fraction, pass_fraction) = (block_eval.regions.block, pass_eval.regions.pass);
+    let (block_suns, fractions, block_eval) = (&check.block_suns, &check.vertex_fractions, &check.block);
+    let (block_fraction, pass_fraction) = (check.block_fraction(), check.pass_fraction());
 
     out.write("field.csv", field_csv(&field))?;
     out.write("curves.obj", curves_obj(&strips.curves))?;
@@ -182,9 +171,9 @@ pub fn run(args: &ShadeArgs) -> CliResult<()> {
     out.write("rulings.obj", rulings_obj(&strips.pattern))?;
     let pieces: Vec<CutPiece> = strips.pattern.strips.iter().enumerate().map(|(id, s)| CutPiece { name: strip_name(id), unrolling: &s.unrolling, marks: Vec::new() }).collect();
     out.write("unrolled.svg", cut_sheet_svg(&pieces))?;
-    out.write("shading.svg", shading_svg(&mesh, &fractions, &strips.pattern, &frame, &block_suns))?;
-    out.write("sunpath.svg", sunpath_svg(&frame, &block_suns, &block_eval.sun_fractions, &block_region))?;
-    let verdict = verdict(args, block_fraction, pass_fraction, strips.pattern.strips.is_empty());
+    out.write("shading.svg", shading_svg(&mesh, fractions, &strips.pattern, &frame, block_suns))?;
+    out.write("sunpath.svg", sunpath_svg(&frame, block_suns, &block_eval.sun_fractions, &block_region))?;
+    let verdict = verdict(args, block_fraction, pass_fraction, &strips);
     let report = json!({
         "input": name,
         "site": {
@@ -194,7 +183,7 @@ pub fn run(args: &ShadeArgs) -> CliResult<()> {
         },
         "light_region": { "block": region_json(&block_region), "pass": region_json(&pass_region) },
         "start": start_description,
-        "constant_slope_vote": vote.map(|v| json!({ "slope_degrees": v.slope_degrees, "voting_faces": v.voting_faces, "histogram": v.histogram, "used": false })),
+        "constant_slope_vote": vote.map(|v| json!({ "slope_degrees": v.slope_degrees, "voting_faces": v.voting_faces, "histogram": v.histogram, "used": start_description["kind"] == "constant slope about the earth axis" })),
         "labels": { "block": count(&labels, VertexLabel::Block), "pass": count(&labels, VertexLabel::Pass), "free": count(&labels, VertexLabel::Free), "ring": args.ring },
         "weights": serde_json::to_value(solver.params().weights).unwrap_or(Value::Null),
         "optimisation": serde_json::to_value(solver.report()).unwrap_or(Value::Null),
@@ -202,15 +191,16 @@ pub fn run(args: &ShadeArgs) -> CliResult<()> {
             "count": strips.pattern.strips.len(), "curves": strips.curves.len(), "width_m": number(width), "spacing_m": number(spacing),
             "theta_degrees": strips.thetas.iter().map(|t| t.map_or(Value::Null, number)).collect::<Vec<_>>(),
             "max_strip_plane_angle_error_degrees": number(strips.pattern.metrics.max_quad_angle_error_degrees),
+            "verdict": strips_verdict_json(&strips),
         },
         "sun_path": {
             "sample_offset_m": number(offset),
-            "block_suns": block_suns.len(), "pass_suns": pass_suns.len(), "rays": block_eval.rays + pass_eval.rays,
+            "block_suns": block_suns.len(), "pass_suns": check.pass_suns.len(), "rays": check.rays(),
             "blocked_fraction": { "block_region": option(block_fraction), "pass_region": option(pass_fraction), "free_block_hours": option(block_eval.regions.free) },
-            "per_sun": suns_json(&block_suns, &block_eval),
+            "per_sun": suns_json(block_suns, block_eval),
             "per_vertex": fractions.iter().map(|f| option(*f)).collect::<Vec<_>>(),
         },
-        "verdict": { "min_blocked": args.min_blocked, "max_blocked_pass": args.max_blocked_pass, "acceptable": verdict.is_ok(), "message": verdict.as_ref().err().cloned() },
+        "verdict": { "min_blocked": args.min_blocked, "max_blocked_pass": args.max_blocked_pass, "tolerance_degrees": args.tolerance, "acceptable": verdict.is_ok(), "message": verdict.as_ref().err().cloned() },
         "timings_seconds": { "field": field_seconds, "evaluation": evaluation_seconds, "total": started.elapsed().as_secs_f64() },
     });
     out.write("report.json", serde_json::to_string_pretty(&report).map_err(|e| CliError::internal(format!("report.json: {e}")))?)?;
@@ -233,23 +223,23 @@ pub fn run(args: &ShadeArgs) -> CliResult<()> {
 }
 
 /// The start field and its description: --start-field, --start-direction, or the default.
-fn start_field(mesh: &TriMesh, args: &ShadeArgs, frame: &lamella::shading::EarthFrame, pass: &LightRegion, blocks: bool) -> CliResult<(Vec<f64>, Value)> {
+fn start_field(mesh: &TriMesh, args: &ShadeArgs, params: &ShadingParams, labels: &[VertexLabel]) -> CliResult<(Vec<f64>, Value)> {
     if let Some(path) = &args.start_field {
         return Ok((read_field_for(mesh, path)?, json!({ "kind": "field file", "file": path.display().to_string() })));
     }
-    let (direction, kind) = match &args.start_direction {
-        Some(text) => (parse_vector("--start-direction", text)?, "height along a direction"),
-        // The paper's planar start: level sets of the height along the earth axis.
-        None if blocks => (frame.axes[2], "height along the earth axis"),
-        // Across the central light and the mean normal: level planes containing the light.
-        None => {
-            let normal: Vec3 = mesh.vertex_normals().iter().sum();
-            let across = frame.to_model(&pass.central_direction()).cross(&normal);
-            (across.try_normalize(1e-12).unwrap_or(frame.axes[2]), "height across the central light")
-        }
+    if let Some(text) = &args.start_direction {
+        let direction = parse_vector("--start-direction", text)?;
+        let values = mesh.positions().iter().map(|p| p.dot(&direction)).collect();
+        return Ok((values, json!({ "kind": "height along a direction", "direction": [direction.x, direction.y, direction.z] })));
+    }
+    let start = default_start(mesh, params, labels);
+    let d = start.direction;
+    let description = match start.kind {
+        StartKind::ConstantSlope { slope_degrees } => json!({ "kind": "constant slope about the earth axis", "slope_degrees": slope_degrees, "axis": [d.x, d.y, d.z] }),
+        StartKind::EarthAxisHeight => json!({ "kind": "height along the earth axis", "direction": [d.x, d.y, d.z] }),
+        StartKind::AcrossCentralLight => json!({ "kind": "height across the central light", "direction": [d.x, d.y, d.z] }),
     };
-    let values = mesh.positions().iter().map(|p| p.dot(&direction)).collect();
-    Ok((values, json!({ "kind": kind, "direction": [direction.x, direction.y, direction.z] })))
+    Ok((start.field, description))
 }
 
 /// Mean distance between neighbouring level curves of `count` uniform levels.
@@ -268,10 +258,11 @@ fn curve_spacing(mesh: &TriMesh, field: &[f64], count: usize) -> CliResult<f64> 
     }
 }
 
-fn verdict(args: &ShadeArgs, block: Option<f64>, pass: Option<f64>, no_strips: bool) -> Result<(), String> {
+/// The verdict of the sun-path check and of the strips (each quad against its own curve's θ).
+fn verdict(args: &ShadeArgs, block: Option<f64>, pass: Option<f64>, strips: &ShadingStrips) -> Result<(), String> {
     let mut misses = Vec::new();
-    if no_strips {
-        misses.push("no strip could be built".to_string());
+    if let Some(miss) = strips.miss() {
+        misses.push(miss);
     }
     if let Some(b) = block.filter(|&b| b < args.min_blocked) {
         misses.push(format!("the block region has {:.1} % of its direct-sun hours blocked, asked at least {:.1} %", 100.0 * b, 100.0 * args.min_blocked));
@@ -280,6 +271,17 @@ fn verdict(args: &ShadeArgs, block: Option<f64>, pass: Option<f64>, no_strips: b
         misses.push(format!("the pass region has {:.1} % of its direct-sun hours blocked, asked at most {:.1} %", 100.0 * p, 100.0 * args.max_blocked_pass));
     }
     if misses.is_empty() { Ok(()) } else { Err(format!("no acceptable shading: {}", misses.join("; "))) }
+}
+
+/// The strips' verdict in report.json.
+fn strips_verdict_json(strips: &ShadingStrips) -> Value {
+    let verdict = &strips.pattern.verdict;
+    let mut value = serde_json::to_value(verdict).unwrap_or(Value::Null);
+    if let Some(object) = value.as_object_mut() {
+        object.insert("acceptable".into(), json!(verdict.is_acceptable()));
+        object.insert("message".into(), strips.miss().map_or(Value::Null, Value::String));
+    }
+    value
 }
 
 fn count(labels: &[VertexLabel], label: VertexLabel) -> usize {
