@@ -155,7 +155,7 @@ namespace Lamella.Tests
             {
                 Assert.IsNull(search.ProxyVertexCount, "a small mesh is searched itself");
             }
-            // 90 x 60 cells: 5,551 vertices, more than 1.5 x 3,000.
+            // 90 x 60 cells: 5,551 vertices, more than 1.5 x 1,500.
             var fine = new Cylinder(90, 60, 5);
             using (var mesh = LamellaMesh.FromArrays(fine.Xyz, fine.Triangles))
             using (var search = new StartSearch(mesh, FieldParams.Default(Family.PseudoGeodesic, 60)))
@@ -163,8 +163,8 @@ namespace Lamella.Tests
                 int? proxy = search.ProxyVertexCount;
                 Console.WriteLine("  {0} vertices searched on a {1}-vertex coarsening", fine.VertexCount, proxy);
                 Assert.IsNotNull(proxy);
-                Assert.GreaterOrEqual(proxy.Value, 2500);
-                Assert.LessOrEqual(proxy.Value, 3000);
+                Assert.GreaterOrEqual(proxy.Value, 1250);
+                Assert.LessOrEqual(proxy.Value, 1500);
                 // Probe until one candidate is scored (the heights across the axis are the rulings, rejected unsolved).
                 bool more;
                 do { more = search.Step(); } while (more && !search.Candidate(search.CandidateCount - 1).IsScored);

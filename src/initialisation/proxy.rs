@@ -1,10 +1,9 @@
-//! The start search's stand-in for a large mesh: the same surface coarsened to a few thousand
-//! vertices ([`crate::mesh::coarsened`]), and the way back, a field carried from the stand-in to
-//! the mesh.
+//! The start search's stand-in for a mesh: the same surface coarsened to about 1,500 vertices
+//! ([`crate::mesh::coarsened`]), and the way back, a field carried from the stand-in to the mesh.
 //!
 //! Which start leads to the asked family is a property of the surface, not of its resolution;
 //! short solves, however, converge more slowly as a mesh grows (a probe that settles on 3,000
-//! vertices is still far from its family on 10,000). Probing on a stand-in keeps the search's
+//! vertices is still far from its family on 10,000), and each of their iterations costs more. Probing on a stand-in keeps the search's
 //! cost and its judgement the same for any input; the winner's field is then carried over and
 //! the solve on the mesh itself starts next to its family.
 

@@ -467,7 +467,7 @@ static void every_candidate_rejected(void)
     lml_search_free(search);
 }
 
-/* A mesh of more than 1.5 x 3,000 vertices is searched on a coarsening: a few thousand of its own
+/* A mesh of more than 1.5 x 1,500 vertices is searched on a coarsening: about 1,500 of its own
  * vertices; the field the search hands over lives on the full mesh. A small mesh is searched
  * itself (proxy count 0). */
 static void coarse_stand_in(const LmlMesh *small)
@@ -502,7 +502,7 @@ static void coarse_stand_in(const LmlMesh *small)
         CHECK_STATUS(lml_search_proxy_vertex_count(search, &proxy), LML_STATUS_OK);
         printf("  search on %lu vertices probes a %lu-vertex coarsening\n", (unsigned long)fine.vertex_count,
                (unsigned long)proxy);
-        CHECK(proxy >= 2500 && proxy <= 3000 && proxy < fine.vertex_count);
+        CHECK(proxy >= 1250 && proxy <= 1500 && proxy < fine.vertex_count);
         /* Probes until one candidate is scored (the heights across the axis are the rulings, rejected
          * unsolved), then its field is carried to every vertex of the full mesh. */
         do {
