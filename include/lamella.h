@@ -75,7 +75,7 @@
 // Version of the C ABI described by this header. It changes whenever a function signature,
 // a struct layout or the meaning of a constant changes incompatibly; compare it with
 // `lml_abi_version()` at start-up to detect a header / library mismatch.
-#define LML_ABI_VERSION 2
+#define LML_ABI_VERSION 3
 
 // `LmlCandidate::kind`: the height along `direction` (negated if `negated` is 1).
 #define LML_START_HEIGHT 0
@@ -407,8 +407,9 @@ typedef struct LmlStripParams {
 
 // The verdict on a strip pattern (see `lml_strips_verdict`). Angles in degrees.
 typedef struct LmlVerdict {
-  // 1 when every strip is within the tolerance of θ and no quad is flipped (and at least one
-  // strip was built), 0 otherwise.
+  // 1 when every strip is within the tolerance of θ, no quad is flipped and no centre line
+  // leaves the surface by more than 1 % of its bounding-box diagonal (and at least one strip
+  // was built), 0 otherwise.
   uint64_t acceptable;
   double tolerance_degrees;
   // Strips with a quad more than the tolerance off θ.
@@ -420,6 +421,9 @@ typedef struct LmlVerdict {
   uint64_t worst_quad;
   double worst_point[3];
   double worst_error_degrees;
+  // Strips whose centre line leaves the surface by more than 1 % of the surface's
+  // bounding-box diagonal (`appro_percent` of their metrics; added in ABI version 3).
+  uint64_t strips_off_surface;
 } LmlVerdict;
 
 // A set of `LML_STRIP_WARNING_*` bits.

@@ -261,6 +261,7 @@ namespace Lamella.Tests
             Assert.AreEqual(2.0, StripParams.Default(Theta, Width).ToleranceDegrees);
             Assert.AreEqual(0, verdict.StripsMissingTheta);
             Assert.AreEqual(0, verdict.StripsWithFlippedQuads);
+            Assert.AreEqual(0, verdict.StripsOffSurface);
             Assert.IsEmpty(verdict.Message);
             StringAssert.StartsWith("acceptable: every strip within 2° of θ", verdict.ToString());
             Assert.DoesNotThrow(strips.EnsureAcceptable);

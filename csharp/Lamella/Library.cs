@@ -6,7 +6,7 @@ namespace Lamella
     public static class Library
     {
         /// <summary>The C ABI version this binding was written against (<c>LML_ABI_VERSION</c> of lamella.h).</summary>
-        public const uint BindingAbiVersion = 2;
+        public const uint BindingAbiVersion = 3;
 
         /// <summary>The ABI version the loaded native library implements.</summary>
         public static uint AbiVersion => NativeMethods.lml_abi_version();

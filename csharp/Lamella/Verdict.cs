@@ -6,8 +6,8 @@ namespace Lamella
 {
     /// <summary>
     /// The verdict on a strip pattern (<c>LmlVerdict</c>): whether every strip's plane meets θ within the tolerance the
-    /// strips were built with (<see cref="StripParams.ToleranceDegrees"/>), without flipped quads, and where the pattern
-    /// misses θ most. Judged on the strips a fabricator would get, against the smooth surface. Angles in degrees.
+    /// strips were built with (<see cref="StripParams.ToleranceDegrees"/>), without flipped quads and without leaving the
+    /// surface by more than 1 % of its bounding-box diagonal, and where the pattern misses θ most. Judged on the strips a fabricator would get, against the smooth surface. Angles in degrees.
     /// </summary>
     public sealed class Verdict
     {
@@ -19,6 +19,7 @@ namespace Lamella
             ToleranceDegrees = record.ToleranceDegrees;
             StripsMissingTheta = checked((int)record.StripsMissingTheta);
             StripsWithFlippedQuads = checked((int)record.StripsWithFlippedQuads);
+            StripsOffSurface = checked((int)record.StripsOffSurface);
             WorstStrip = checked((int)record.WorstStrip);
             WorstQuad = checked((int)record.WorstQuad);
             worstPoint = (double[])(record.WorstPoint ?? new double[3]).Clone();
@@ -26,7 +27,10 @@ namespace Lamella
             Message = message ?? string.Empty;
         }
 
-        /// <summary>True when every strip is within the tolerance of θ, no quad is flipped and at least one strip was built.</summary>
+        /// <summary>
+        /// True when every strip is within the tolerance of θ, no quad is flipped, no centre line leaves the surface by more
+        /// than 1 % of its bounding-box diagonal and at least one strip was built.
+        /// </summary>
         public bool IsAcceptable { get; }
         /// <summary>The largest angle error of a quad of an acceptable pattern.</summary>
         public double ToleranceDegrees { get; }
@@ -34,6 +38,8 @@ namespace Lamella
         public int StripsMissingTheta { get; }
         /// <summary>Strips with flipped quads.</summary>
         public int StripsWithFlippedQuads { get; }
+        /// <summary>Strips whose centre line leaves the surface by more than 1 % of its bounding-box diagonal.</summary>
+        public int StripsOffSurface { get; }
         /// <summary>The strip of the quad that misses θ most (0 when no strip was built).</summary>
         public int WorstStrip { get; }
         /// <summary>That quad's index along its strip.</summary>
@@ -51,7 +57,7 @@ namespace Lamella
         /// <summary>One line: the library's message, or for an acceptable pattern the tolerance and the worst quad.</summary>
         public override string ToString() =>
             IsAcceptable
-                ? string.Format(CultureInfo.InvariantCulture, "acceptable: every strip within {0:0.###}° of θ, no flipped quad (worst: strip {1} quad {2}, {3:0.###}° off)",
+                ? string.Format(CultureInfo.InvariantCulture, "acceptable: every strip within {0:0.###}° of θ and 1 % of the surface, no flipped quad (worst: strip {1} quad {2}, {3:0.###}° off)",
                     ToleranceDegrees, WorstStrip, WorstQuad, WorstErrorDegrees)
                 : Message;
     }

@@ -142,8 +142,9 @@ impl LmlPatternMetrics {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LmlVerdict {
-    /// 1 when every strip is within the tolerance of θ and no quad is flipped (and at least one
-    /// strip was built), 0 otherwise.
+    /// 1 when every strip is within the tolerance of θ, no quad is flipped and no centre line
+    /// leaves the surface by more than 1 % of its bounding-box diagonal (and at least one strip
+    /// was built), 0 otherwise.
     pub acceptable: u64,
     pub tolerance_degrees: f64,
     /// Strips with a quad more than the tolerance off θ.
@@ -155,6 +156,9 @@ pub struct LmlVerdict {
     pub worst_quad: u64,
     pub worst_point: [f64; 3],
     pub worst_error_degrees: f64,
+    /// Strips whose centre line leaves the surface by more than 1 % of the surface's
+    /// bounding-box diagonal (`appro_percent` of their metrics; added in ABI version 3).
+    pub strips_off_surface: u64,
 }
 
 impl From<&Verdict> for LmlVerdict {
@@ -169,6 +173,7 @@ impl From<&Verdict> for LmlVerdict {
             worst_quad: count(worst.quad),
             worst_point: worst.point,
             worst_error_degrees: worst.error_degrees,
+            strips_off_surface: count(v.strips_off_surface.len()),
         }
     }
 }

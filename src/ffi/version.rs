@@ -5,7 +5,7 @@ use std::ffi::c_char;
 /// Version of the C ABI described by this header. It changes whenever a function signature,
 /// a struct layout or the meaning of a constant changes incompatibly; compare it with
 /// `lml_abi_version()` at start-up to detect a header / library mismatch.
-pub const LML_ABI_VERSION: u32 = 2;
+pub const LML_ABI_VERSION: u32 = 3;
 
 /// The ABI version the loaded library implements (`LML_ABI_VERSION` of its own header).
 #[no_mangle]

@@ -7,7 +7,7 @@
 use super::error::ShadingError;
 use crate::curves::{extract_level_curves, resample_all, uniform_levels, LevelCurve};
 use crate::mesh::{FaceBvh, TriMesh, Vec3};
-use crate::strips::{rectifying_strips, PatternMetrics, StripParams, StripPattern, Verdict};
+use crate::strips::{rectifying_strips, PatternMetrics, StripParams, StripPattern, Verdict, MAX_APPRO_PERCENT};
 
 /// The strips of a shading design.
 #[derive(Clone, Debug)]
@@ -22,7 +22,8 @@ pub struct ShadingStrips {
 
 impl ShadingStrips {
     /// What the strips miss (one line), `None` when they are acceptable: how many miss their
-    /// curve's θ by more than the tolerance or have flipped quads, and the worst quad.
+    /// curve's θ by more than the tolerance, have flipped quads or leave the surface, and the
+    /// worst quad.
     pub fn miss(&self) -> Option<String> {
         let verdict = &self.pattern.verdict;
         if verdict.is_acceptable() {
@@ -40,6 +41,10 @@ impl ShadingStrips {
         if !verdict.strips_with_flipped_quads.is_empty() {
             let n = verdict.strips_with_flipped_quads.len();
             parts.push(format!("{n} {}", if n == 1 { "strip has flipped quads" } else { "strips have flipped quads" }));
+        }
+        if !verdict.strips_off_surface.is_empty() {
+            let n = verdict.strips_off_surface.len();
+            parts.push(format!("{n} {} the surface by more than {MAX_APPRO_PERCENT} % of its diagonal", if n == 1 { "strip leaves" } else { "strips leave" }));
         }
         let worst = verdict.worst.map_or(String::new(), |w| {
             format!(" (worst: strip {} quad {} at ({:.3}, {:.3}, {:.3}), {:.2}° off)", w.strip, w.quad, w.point[0], w.point[1], w.point[2], w.error_degrees)

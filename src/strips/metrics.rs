@@ -146,7 +146,7 @@ impl StripMetrics {
             let Some(u) = n.cross(&(edges[i - 1] + edges[i])).try_normalize(0.0) else { continue };
             let sign = if b.dot(&u) < 0.0 { -1.0 } else { 1.0 };
             let measured = (sign * b.dot(&n)).clamp(-1.0, 1.0).acos().to_degrees();
-            metrics.max_diff_theta_degrees = metrics.max_diff_theta_degrees.max((measured - theta_degrees).abs());
+            metrics.max_diff_theta_degrees = metrics.max_diff_theta_degrees.max(family.angle_error_degrees(measured, theta_degrees));
         }
         let target = |i: usize| {
             let n = strip.normals[i];

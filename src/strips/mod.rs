@@ -25,4 +25,4 @@ pub use params::{StripParams, StripWeights, MAX_STRIP_ITERATIONS, MAX_STRIP_ROUN
 pub use strip::{RectifyingStrip, SkippedCurve, StripPattern};
 pub use surface_distance::{SurfacePoint, SurfaceProjector};
 pub use unrolling::{straightness, unroll, Unrolling};
-pub use verdict::{Verdict, WorstQuad, DEFAULT_TOLERANCE_DEGREES};
+pub use verdict::{Verdict, WorstQuad, DEFAULT_TOLERANCE_DEGREES, MAX_APPRO_PERCENT};

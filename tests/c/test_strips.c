@@ -334,7 +334,7 @@ static void check_metrics(const LmlStrips *strips, size_t s, size_t curve_count)
            verdict.worst_point[0], verdict.worst_point[1], verdict.worst_point[2], verdict.worst_error_degrees,
            verdict.tolerance_degrees);
     CHECK(verdict.acceptable == 1 && verdict.tolerance_degrees == 2.0);
-    CHECK(verdict.strips_missing_theta == 0 && verdict.strips_with_flipped_quads == 0);
+    CHECK(verdict.strips_missing_theta == 0 && verdict.strips_with_flipped_quads == 0 && verdict.strips_off_surface == 0);
     CHECK(verdict.worst_strip < s && verdict.worst_error_degrees == worst_plane && worst_plane <= 2.0);
     CHECK(metrics[verdict.worst_strip].max_quad_angle_error_degrees == worst_plane);
     quads = strip_offsets(lml_strips_quad_offsets, strips, s);
@@ -368,7 +368,8 @@ static void check_skipped(const LmlField *field, const LmlStripParams *params)
     lml_curves_free(coarse);
     CHECK(strips != NULL);
     CHECK_STATUS(lml_strips_verdict(strips, &verdict), LML_STATUS_OK);
-    CHECK(verdict.acceptable == 0 && verdict.strips_missing_theta == 0 && verdict.strips_with_flipped_quads == 0);
+    CHECK(verdict.acceptable == 0 && verdict.strips_missing_theta == 0 && verdict.strips_with_flipped_quads == 0 &&
+          verdict.strips_off_surface == 0);
     CHECK_STATUS(lml_strips_count(strips, &count), LML_STATUS_OK);
     CHECK(count == 0);
     CHECK_STATUS(lml_strips_skipped(strips, NULL, 0, &needed), LML_STATUS_BUFFER_TOO_SMALL);

@@ -57,6 +57,8 @@ namespace Lamella.Interop
         public double[] WorstPoint;
         /// <summary>That quad's angle error.</summary>
         public double WorstErrorDegrees;
+        /// <summary>Strips whose centre line leaves the surface by more than 1 % of its bounding-box diagonal.</summary>
+        public ulong StripsOffSurface;
     }
 
     /// <summary>
