@@ -89,3 +89,34 @@ fn reshape_rejects_bad_input() {
     assert_bad_input(&dir.0, &["reshape", "--mesh", "cyl.obj", "--field", "short.csv", "--theta", "45", "--out", "y"], &["short.csv"]);
     assert!(!dir.path("x").exists() && !dir.path("y").exists(), "no output for bad input");
 }
+
+#[test]
+fn design_names_a_reshape_tolerance_that_makes_its_strips_acceptable() {
+    // z = xy/5 at θ = 30°: the default design's strips miss θ (exit 3). The verdict's message
+    // names the tolerance a short reshape trial needed; reshaping with it makes the strips
+    // acceptable, within 1 % of the diagonal, the deviation measured here against every face.
+    use lamella::surfaces::{hyperbolic_paraboloid, HyperbolicParaboloid};
+    let dir = Scratch::new("reshape-advice");
+    let surface = HyperbolicParaboloid { c: 5.0, half_width: 5.0, target_vertices: 2000, irregularity: 0.5, seed: 8 };
+    let mesh = hyperbolic_paraboloid(&surface).expect("valid surface").into_mesh().expect("valid mesh");
+    mesh.write_obj(std::fs::File::create(dir.path("hypar.obj")).expect("create")).expect("write");
+    let output = lamella(&dir.0, &["design", "--mesh", "hypar.obj", "--theta", "30", "--out", "d", "--quiet"]);
+    let message = stderr(&output);
+    assert_eq!(output.status.code(), Some(3), "{message}");
+    let trial = &read_json(&dir.path("d/report.json"))["reshape_trial"];
+    assert_eq!(trial["acceptable"], true, "{trial}");
+    let command = message.split("lamella reshape ").nth(1).expect("the message names a reshape");
+    let words: Vec<&str> = command.split_whitespace().collect();
+    assert_eq!(&words[..4], &["--session", "d/session.bin", "--theta", "30"], "{message}");
+    assert_eq!(words[4], "--tolerance", "{message}");
+    let percent: f64 = words[5].trim_end_matches('%').parse().expect("a percentage");
+    assert!(percent <= 1.0, "the trial needed {percent} % of the diagonal");
+
+    let output = lamella(&dir.0, &["reshape", "--session", "d/session.bin", "--theta", "30", "--tolerance", words[5], "--out", "r", "--quiet"]);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    assert_eq!(read_json(&dir.path("r/report.json"))["strips"]["acceptable"], true);
+    let moved = TriMesh::read_obj(&dir.path("r/surface.obj")).expect("surface.obj is a mesh");
+    let (low, high) = mesh.bounding_box();
+    let worst = crate::reshape_cylinder::brute_force_distances(moved.positions(), &mesh).into_iter().fold(0.0, f64::max);
+    assert!(worst > 0.0 && worst <= percent / 100.0 * (high - low).norm() * (1.0 + 1e-9), "moved {worst} m, {percent} % of the diagonal");
+}

@@ -56,7 +56,7 @@ fn triangle_distance(p: &Vec3, a: &Vec3, b: &Vec3, c: &Vec3) -> f64 {
 }
 
 /// Distance of every point to the mesh, by trying every face.
-fn brute_force_distances(points: &[Vec3], mesh: &TriMesh) -> Vec<f64> {
+pub(crate) fn brute_force_distances(points: &[Vec3], mesh: &TriMesh) -> Vec<f64> {
     let x = mesh.positions();
     points
         .iter()

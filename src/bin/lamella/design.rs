@@ -12,6 +12,7 @@ use crate::mesh_input::{load_mesh, mesh_name};
 use crate::output_dir::OutputDir;
 use crate::progress::{note, summary, Verbosity};
 use crate::report_json::{self, Timings};
+use crate::reshape_trial::reshape_trial;
 use crate::start_field::start_solver;
 use crate::strip_obj::strip_name;
 use crate::strips_cmd::{build_strips, strips_summary, warning_lines, write_strip_files, StripRun};
@@ -56,6 +57,13 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     if verbosity == Verbosity::Verbose {
         warning_lines(&run).iter().for_each(err_line);
     }
+    // Only when the verdict fails: how far the surface would have to move (issue 19's trial).
+    let trial = if run.pattern.verdict.is_acceptable() {
+        None
+    } else {
+        note(verbosity, "the strips miss θ: trying how far the surface would have to move (a short reshape)");
+        reshape_trial(&mesh, &solver.field(), theta, settings.strips, settings.tolerance).ok()
+    };
 
     let mut surface = Vec::new();
     mesh.write_obj(&mut surface).map_err(|e| CliError::internal(format!("surface.obj: {e}")))?;
@@ -83,6 +91,9 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     if let (Some(plan), Some(root)) = (&plan, report.as_object_mut()) {
         root.insert("fabrication".into(), report_section(plan));
     }
+    if let (Some(trial), Some(root)) = (&trial, report.as_object_mut()) {
+        root.insert("reshape_trial".into(), trial.to_json());
+    }
     out.write("report.json", report_json::pretty(&report))?;
     let target = out.target().display().to_string();
     out.commit()?;
@@ -102,10 +113,14 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
             started.elapsed().as_secs_f64()
         ),
     )?;
+    let session = format!("{target}/session.bin");
     verdict(&run).map_err(|error| match error {
-        CliError::NoAcceptableFamily(message) => CliError::NoAcceptableFamily(format!(
-            "{message}; if no family of θ = {theta}° exists on this surface, move the surface a little: lamella reshape --mesh M.obj --field {target}/field.csv --theta {theta} --tolerance 1%"
-        )),
+        CliError::NoAcceptableFamily(message) => CliError::NoAcceptableFamily(match &trial {
+            Some(trial) => format!("{message}; {}", trial.advice(&session, theta)),
+            None => format!(
+                "{message}; if no family of θ = {theta}° exists on this surface, move the surface a little: lamella reshape --session {session} --theta {theta} --tolerance 1%"
+            ),
+        }),
         other => other,
     })
 }

@@ -23,6 +23,7 @@ mod output_dir;
 mod progress;
 mod report_json;
 mod reshape_cmd;
+mod reshape_trial;
 mod shade_cmd;
 mod slope_field;
 mod start_field;
