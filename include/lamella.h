@@ -1946,6 +1946,32 @@ LmlStatus lml_reshape_new(const struct LmlMesh *mesh,
 // Releases a session. NULL is accepted and ignored. The handle must not be used again.
 void lml_reshape_free(struct LmlReshape *reshape);
 
+// Serialises the whole session (original surface, field, parameters, moved positions with their
+// auxiliary variables, tolerance guard, solver damping) as bytes: the magic `"LMLR"`, a
+// little-endian `uint32_t` format version, then the state. Portable across platforms; a restored
+// session continues bit for bit as the original would have.
+//
+// Two-call pattern: `*needed` is always set to the byte count; if `out` is NULL or `capacity`
+// (in bytes) is smaller, nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned. The
+// buffer stays owned by the caller.
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_reshape_save(const struct LmlReshape *reshape,
+                           uint8_t *out,
+                           size_t capacity,
+                           size_t *needed);
+
+// Restores a session from `length` bytes written by `lml_reshape_save` (copied; the caller
+// keeps them). `out` receives the new session, owned by the caller (release with
+// `lml_reshape_free`); set to NULL on failure.
+//
+// Every restored quantity is checked: surface, field and parameters as in `lml_reshape_new`,
+// every variable finite and the moved surface valid, counters, guard and damping in range.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_CORRUPT_DATA` (empty, truncated, damaged or inconsistent
+// bytes, a field session's bytes, or another format version: the message says which);
+// `LML_STATUS_INVALID_ARGUMENT` (NULL `out`, NULL `bytes` with a non-zero length).
+LmlStatus lml_reshape_load(const uint8_t *bytes, size_t length, struct LmlReshape **out);
+
 // Runs at most `max_iterations` iterations and writes the state to `*report` (may be NULL).
 //
 // Returns `LML_STATUS_MORE` (step again), `LML_STATUS_CONVERGED`, `LML_STATUS_INVALID_ARGUMENT`

@@ -48,6 +48,33 @@ namespace Lamella.Tests
         }
 
         [Test]
+        public void ASavedSessionContinuesBitForBit()
+        {
+            var cylinder = new Cylinder(16, 10, 11);
+            using (var mesh = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            using (var reshape = new ReshapeSolver(mesh, cylinder.InitialField, 45.0, 0.2, false))
+            {
+                reshape.Step(5);
+                byte[] bytes = reshape.Save();
+                using (var restored = ReshapeSolver.Load(bytes))
+                {
+                    CollectionAssert.AreEqual(reshape.Positions(), restored.Positions());
+                    ReshapeReport a = reshape.Step(5), b = restored.Step(5);
+                    Assert.AreEqual(a.Iterations, b.Iterations);
+                    Assert.Greater(a.MaxDeviation, 0.0);
+                    Assert.AreEqual(a.MaxDeviation, b.MaxDeviation);
+                    CollectionAssert.AreEqual(reshape.Positions(), restored.Positions(), "the same bits after stepping on");
+                    Assert.AreEqual(bytes.Length, restored.Save().Length);
+                }
+                var truncated = new byte[bytes.Length / 2];
+                Array.Copy(bytes, truncated, truncated.Length);
+                var error = Assert.Throws<LamellaException>(() => ReshapeSolver.Load(truncated));
+                Assert.AreEqual(Status.CorruptData, error.Status);
+                Assert.Throws<ArgumentNullException>(() => ReshapeSolver.Load(null));
+            }
+        }
+
+        [Test]
         public void InvalidArgumentsAreRefusedByName()
         {
             var cylinder = new Cylinder(8, 6, 3);

@@ -72,6 +72,33 @@ namespace Lamella
                 toleranceIsFraction ? 1u : 0u, out handle));
         }
 
+        private ReshapeSolver(ReshapeHandle handle)
+        {
+            this.handle = handle;
+        }
+
+        /// <summary>
+        /// Restores a session saved with <see cref="Save"/> (<c>lml_reshape_load</c>); it continues bit for bit as the
+        /// saved one would have.
+        /// </summary>
+        /// <exception cref="LamellaException"><see cref="Status.CorruptData"/> for damaged, truncated or foreign bytes (a field session's, another format version).</exception>
+        public static ReshapeSolver Load(byte[] bytes)
+        {
+            if (bytes == null) throw new ArgumentNullException(nameof(bytes));
+            ReshapeHandle loaded;
+            Native.Check(NativeMethods.lml_reshape_load(bytes, Native.Size(bytes.Length), out loaded));
+            return new ReshapeSolver(loaded);
+        }
+
+        /// <summary>The whole session as bytes (<c>lml_reshape_save</c>): original surface, field, moved positions, solver state.</summary>
+        public byte[] Save()
+        {
+            lock (gate)
+            {
+                return Native.Read((byte[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_reshape_save(handle, b, c, out n));
+            }
+        }
+
         /// <summary>Runs at most <paramref name="maxIterations"/> iterations; returns the state (converged or not).</summary>
         public ReshapeReport Step(int maxIterations)
         {

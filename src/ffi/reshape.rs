@@ -126,6 +126,46 @@ pub unsafe extern "C" fn lml_reshape_free(reshape: *mut LmlReshape) {
     });
 }
 
+/// Serialises the whole session (original surface, field, parameters, moved positions with their
+/// auxiliary variables, tolerance guard, solver damping) as bytes: the magic `"LMLR"`, a
+/// little-endian `uint32_t` format version, then the state. Portable across platforms; a restored
+/// session continues bit for bit as the original would have.
+///
+/// Two-call pattern: `*needed` is always set to the byte count; if `out` is NULL or `capacity`
+/// (in bytes) is smaller, nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned. The
+/// buffer stays owned by the caller.
+/// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+#[no_mangle]
+pub unsafe extern "C" fn lml_reshape_save(reshape: *const LmlReshape, out: *mut u8, capacity: usize, needed: *mut usize) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle; `out` writable for `capacity` bytes; writable `needed`.
+        let reshape = unsafe { handle(reshape, "reshape") }?;
+        unsafe { copy_out(&reshape.solver.to_bytes(), out, capacity, needed, "out") }
+    })
+}
+
+/// Restores a session from `length` bytes written by `lml_reshape_save` (copied; the caller
+/// keeps them). `out` receives the new session, owned by the caller (release with
+/// `lml_reshape_free`); set to NULL on failure.
+///
+/// Every restored quantity is checked: surface, field and parameters as in `lml_reshape_new`,
+/// every variable finite and the moved surface valid, counters, guard and damping in range.
+///
+/// Returns `LML_STATUS_OK`; `LML_STATUS_CORRUPT_DATA` (empty, truncated, damaged or inconsistent
+/// bytes, a field session's bytes, or another format version: the message says which);
+/// `LML_STATUS_INVALID_ARGUMENT` (NULL `out`, NULL `bytes` with a non-zero length).
+#[no_mangle]
+pub unsafe extern "C" fn lml_reshape_load(bytes: *const u8, length: usize, out: *mut *mut LmlReshape) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): writable `out`; `bytes` readable for `length` bytes.
+        let mut out = unsafe { Out::new(out, "out") }?;
+        out.set(std::ptr::null_mut());
+        let bytes = unsafe { input(bytes, length, "bytes") }?;
+        out.set_owned(LmlReshape { solver: ReshapeSolver::from_bytes(bytes)? });
+        Ok(LmlStatus::Ok)
+    })
+}
+
 /// Runs at most `max_iterations` iterations and writes the state to `*report` (may be NULL).
 ///
 /// Returns `LML_STATUS_MORE` (step again), `LML_STATUS_CONVERGED`, `LML_STATUS_INVALID_ARGUMENT`

@@ -40,4 +40,5 @@ pub use problem::FieldProblem;
 pub use params::{Family, FieldParams, Stage, VaryingAngleParams, Weights, SETTLING_ITERATIONS};
 pub use report::{Energies, StepReport};
 pub use session::{SESSION_MAGIC, SESSION_VERSION};
+pub(crate) use session::{check_damping, corrupt, framed, unframed, MAX_SAVED_ITERATIONS};
 pub use varying_angle::{VaryingAngleReport, VaryingAngleSolver, LEVEL_ANGLE_SPACING, SETTLED_TARGET_DEGREES};

@@ -37,13 +37,46 @@ fn encoding() -> impl Options {
     bincode::DefaultOptions::new().with_fixint_encoding().with_little_endian()
 }
 
-fn corrupt(message: impl Into<String>) -> FieldError {
+pub(crate) fn corrupt(message: impl Into<String>) -> FieldError {
     FieldError::CorruptData { message: message.into() }
+}
+
+/// `state` behind `magic` and a little-endian `u32` format `version`.
+pub(crate) fn framed<T: Serialize>(magic: [u8; 4], version: u32, state: &T) -> Vec<u8> {
+    let mut bytes = magic.to_vec();
+    bytes.extend_from_slice(&version.to_le_bytes());
+    // Invariant: serialising plain data into a Vec cannot fail.
+    bytes.extend(encoding().serialize(state).expect("session serialises"));
+    bytes
+}
+
+/// The state framed by [`framed`], checked: `what` names the kind of session in the messages.
+/// Errors: `CorruptData` for another magic number, truncated, damaged or trailing bytes;
+/// `UnsupportedVersion` for another format version.
+pub(crate) fn unframed<T: serde::de::DeserializeOwned>(bytes: &[u8], magic: [u8; 4], version: u32, what: &str) -> Result<T, FieldError> {
+    if bytes.len() < 8 || bytes[..4] != magic {
+        return Err(corrupt(format!("not a Lamella {what} session (bad magic number)")));
+    }
+    let found = u32::from_le_bytes([bytes[4], bytes[5], bytes[6], bytes[7]]);
+    if found != version {
+        return Err(FieldError::UnsupportedVersion { found, supported: version });
+    }
+    let body = &bytes[8..];
+    encoding().with_limit(body.len() as u64).reject_trailing_bytes().deserialize(body).map_err(|e| corrupt(format!("session data: {e}")))
+}
+
+/// The damping state is in range: μ finite and positive (or not set yet), ν finite and ≥ 1.
+pub(crate) fn check_damping(damping: DampingState) -> Result<(), FieldError> {
+    let DampingState { mu, nu } = damping;
+    if !mu.is_none_or(|mu| mu.is_finite() && mu > 0.0) || !nu.is_finite() || nu < 1.0 {
+        return Err(corrupt(format!("saved damping state (μ {mu:?}, ν {nu}) is out of range")));
+    }
+    Ok(())
 }
 
 /// Most iterations a restored session may have run (a bound far above any real run that keeps
 /// the counters clear of overflow).
-const MAX_SAVED_ITERATIONS: usize = 1 << 40;
+pub(crate) const MAX_SAVED_ITERATIONS: usize = 1 << 40;
 
 /// The iteration counters and the damping state are in range.
 fn check_counts(session: &Session) -> Result<(), FieldError> {
@@ -53,11 +86,7 @@ fn check_counts(session: &Session) -> Result<(), FieldError> {
     if session.stage_iterations > session.iterations || session.slow_iterations > session.iterations {
         return Err(corrupt("saved stage counters exceed the iteration count"));
     }
-    let DampingState { mu, nu } = session.damping;
-    if !mu.is_none_or(|mu| mu.is_finite() && mu > 0.0) || !nu.is_finite() || nu < 1.0 {
-        return Err(corrupt(format!("saved damping state (μ {mu:?}, ν {nu}) is out of range")));
-    }
-    Ok(())
+    check_damping(session.damping)
 }
 
 /// The saved report holds finite, non-negative measures and vertex indices of the mesh (it is
@@ -94,11 +123,7 @@ impl FieldSolver {
             damping: self.lm.damping_state(),
             last_report: self.last_report.clone(),
         };
-        let mut bytes = SESSION_MAGIC.to_vec();
-        bytes.extend_from_slice(&SESSION_VERSION.to_le_bytes());
-        // Invariant: serialising plain data into a Vec cannot fail.
-        bytes.extend(encoding().serialize(&session).expect("session serialises"));
-        bytes
+        framed(SESSION_MAGIC, SESSION_VERSION, &session)
     }
 
     /// Restores a session saved by [`FieldSolver::to_bytes`]. Truncated, corrupted or
@@ -109,19 +134,7 @@ impl FieldSolver {
     /// un-scaled, counters and damping in range, the saved report finite and about the mesh's
     /// vertices.
     pub fn from_bytes(bytes: &[u8]) -> Result<FieldSolver, FieldError> {
-        if bytes.len() < 8 || bytes[..4] != SESSION_MAGIC {
-            return Err(corrupt("not a Lamella field session (bad magic number)"));
-        }
-        let version = u32::from_le_bytes([bytes[4], bytes[5], bytes[6], bytes[7]]);
-        if version != SESSION_VERSION {
-            return Err(FieldError::UnsupportedVersion { found: version, supported: SESSION_VERSION });
-        }
-        let body = &bytes[8..];
-        let session: Session = encoding()
-            .with_limit(body.len() as u64)
-            .reject_trailing_bytes()
-            .deserialize(body)
-            .map_err(|e| corrupt(format!("session data: {e}")))?;
+        let session: Session = unframed(bytes, SESSION_MAGIC, SESSION_VERSION, "field")?;
         validate_params(&session.params).map_err(|e| corrupt(format!("saved parameters: {e}")))?;
         let scales = [("field scale", session.scales.field), ("length scale", session.scales.length), ("gradient target", session.gradient_target)];
         if let Some((name, value)) = scales.iter().find(|(_, v)| !(v.is_normal() && *v > 0.0)) {

@@ -11,10 +11,12 @@ mod linearisation;
 mod params;
 mod problem;
 mod report;
+mod session;
 mod solver;
 
 pub use alternating::{alternate, AlternatingParams, Alternated};
 pub use error::ReshapeError;
 pub use params::{ReshapeParams, ReshapeWeights, Tolerance, GUARD_GROWTH};
 pub use report::{ReshapeEnergies, ReshapeReport};
+pub use session::{RESHAPE_SESSION_MAGIC, RESHAPE_SESSION_VERSION};
 pub use solver::{ReshapeSolver, MAX_GUARD_RAISES};

@@ -21,24 +21,26 @@ pub const MAX_GUARD_RAISES: usize = 12;
 /// The optimisation runs on a copy of the mesh scaled to mean edge length 1, so the default
 /// (Table 3) weights suit any input; every value handed back is in the caller's units.
 pub struct ReshapeSolver {
-    problem: SurfaceProblem,
-    original: Original,
-    lm: LevenbergMarquardt,
-    params: ReshapeParams,
+    pub(super) problem: SurfaceProblem,
+    pub(super) original: Original,
+    /// The original surface as given (the caller's units), for saving the session.
+    pub(super) given: TriMesh,
+    pub(super) lm: LevenbergMarquardt,
+    pub(super) params: ReshapeParams,
     /// Positions (xyz per vertex), then `[b, u]` per curve vertex.
-    x: Vec<f64>,
+    pub(super) x: Vec<f64>,
     /// The variables before the last step, to undo it.
-    previous: Vec<f64>,
-    field: Vec<f64>,
+    pub(super) previous: Vec<f64>,
+    pub(super) field: Vec<f64>,
     /// Internal lengths = caller lengths × `length_scale`.
     length_scale: f64,
     /// The tolerance in internal lengths.
     tolerance: f64,
-    iterations: usize,
-    slow_iterations: usize,
-    guard_raises: usize,
-    converged: bool,
-    last_report: ReshapeReport,
+    pub(super) iterations: usize,
+    pub(super) slow_iterations: usize,
+    pub(super) guard_raises: usize,
+    pub(super) converged: bool,
+    pub(super) last_report: ReshapeReport,
 }
 
 impl ReshapeSolver {
@@ -51,7 +53,8 @@ impl ReshapeSolver {
     /// [`Self::new`] starting from `moved`, an earlier result on `original` (same faces): the
     /// deviation, `v_ori` of Eq. 14 and `l*` of Eq. 15 still refer to `original`. What the
     /// alternating schedule ([`super::alternate`]) needs after each field step.
-    pub fn resume(original: &TriMesh, moved: &TriMesh, field: &[f64], params: ReshapeParams) -> Result<ReshapeSolver, ReshapeError> {
+    pub fn resume(original_mesh: &TriMesh, moved: &TriMesh, field: &[f64], params: ReshapeParams) -> Result<ReshapeSolver, ReshapeError> {
+        let original = original_mesh;
         validate_params(&params)?;
         validate_field(original, field)?;
         if moved.faces() != original.faces() || moved.vertex_count() != original.vertex_count() {
@@ -77,6 +80,7 @@ impl ReshapeSolver {
             previous: x.clone(),
             problem,
             original,
+            given: original_mesh.clone(),
             lm,
             params,
             x,
@@ -184,6 +188,11 @@ impl ReshapeSolver {
     /// caller's units.
     pub fn deviations(&self) -> Vec<f64> {
         self.problem.lin.anchors.iter().map(|a| a.distance / self.length_scale).collect()
+    }
+
+    /// The original surface, as given (the caller's units).
+    pub fn original(&self) -> &TriMesh {
+        &self.given
     }
 
     /// The fixed field.

@@ -1,15 +1,78 @@
 /* Surface optimisation through the C ABI (paper Sec. 3.3): the cylinder moved so that the level
  * sets of its initial field approach a 45 degree family, within an absolute tolerance; every
  * invalid input, stepping to convergence, positions and deviations with the two-call pattern,
- * the deviations checked against the distance from the cylinder's axis. */
+ * the deviations checked against the distance from the cylinder's axis; a saved session restored
+ * and stepped on in step with the original, and damaged bytes refused. */
 #include "check.h"
 #include "harness.h"
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define RESHAPE_BUDGET 300
 #define RESHAPE_TOLERANCE 0.2
+
+/* The positions of `reshape` (3 n values), or NULL when they cannot be read. */
+static double *positions_of(const LmlReshape *reshape, size_t n)
+{
+    size_t needed = 0;
+    double *xyz = malloc(3 * n * sizeof(double));
+    if (xyz != NULL && lml_reshape_positions(reshape, xyz, 3 * n, &needed) != LML_STATUS_OK) {
+        free(xyz);
+        xyz = NULL;
+    }
+    return xyz;
+}
+
+/* Saves `reshape`, restores it, and steps both three iterations: the same bits before and after.
+ * Damaged bytes, a field session's bytes and NULL arguments are refused. */
+static void save_and_restore(LmlReshape *reshape, size_t n)
+{
+    size_t size = 0, needed = 0;
+    unsigned char *bytes;
+    LmlReshape *restored = NULL;
+    LmlReshapeReport a, b;
+    double *before, *after;
+
+    CHECK_STATUS(lml_reshape_save(reshape, NULL, 0, &size), LML_STATUS_BUFFER_TOO_SMALL);
+    CHECK(size > 8);
+    CHECK_STATUS(lml_reshape_save(NULL, NULL, 0, &size), LML_STATUS_INVALID_ARGUMENT);
+    bytes = malloc(size);
+    if (bytes == NULL) {
+        CHECK(!"out of memory");
+        return;
+    }
+    CHECK_STATUS(lml_reshape_save(reshape, bytes, size - 1, &needed), LML_STATUS_BUFFER_TOO_SMALL);
+    CHECK_STATUS(lml_reshape_save(reshape, bytes, size, &needed), LML_STATUS_OK);
+    CHECK(needed == size && memcmp(bytes, "LMLR", 4) == 0);
+
+    CHECK_STATUS(lml_reshape_load(bytes, size, &restored), LML_STATUS_OK);
+    CHECK(restored != NULL);
+    if (restored != NULL) {
+        LmlStatus original = lml_reshape_step(reshape, 3, &a);
+        CHECK_STATUS(lml_reshape_step(restored, 3, &b), original);
+        CHECK(a.iterations == b.iterations && a.max_deviation == b.max_deviation && a.energy_angle == b.energy_angle);
+        before = positions_of(reshape, n);
+        after = positions_of(restored, n);
+        CHECK(before != NULL && after != NULL && memcmp(before, after, 3 * n * sizeof(double)) == 0);
+        free(before);
+        free(after);
+        lml_reshape_free(restored);
+    }
+
+    restored = NULL;
+    CHECK_STATUS(lml_reshape_load(bytes, size / 2, &restored), LML_STATUS_CORRUPT_DATA);
+    CHECK(restored == NULL);
+    CHECK_STATUS(lml_reshape_load(bytes, 0, &restored), LML_STATUS_CORRUPT_DATA);
+    bytes[3] = 'F'; /* "LMLF": a field session's magic */
+    CHECK_STATUS(lml_reshape_load(bytes, size, &restored), LML_STATUS_CORRUPT_DATA);
+    CHECK_MESSAGE("surface session");
+    CHECK(restored == NULL);
+    CHECK_STATUS(lml_reshape_load(NULL, 5, &restored), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_STATUS(lml_reshape_load(bytes, size, NULL), LML_STATUS_INVALID_ARGUMENT);
+    free(bytes);
+}
 
 void test_reshape(const Cylinder *c)
 {
@@ -73,6 +136,8 @@ void test_reshape(const Cylinder *c)
     CHECK(report.max_deviation > 0.0 && report.max_deviation <= RESHAPE_TOLERANCE);
     CHECK(report.rms_deviation <= report.max_deviation);
     CHECK(isfinite(report.energy_angle) && isfinite(report.energy_fair) && isfinite(report.energy_close) && isfinite(report.energy_edge));
+    save_and_restore(reshape, n);
+    CHECK_STATUS(lml_reshape_report(reshape, &report), LML_STATUS_OK);
 
     /* Two-call arrays: the size first, then the values. */
     CHECK_STATUS(lml_reshape_positions(reshape, NULL, 0, &needed), LML_STATUS_BUFFER_TOO_SMALL);

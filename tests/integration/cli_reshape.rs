@@ -76,6 +76,29 @@ fn reshape_reads_a_session() {
 }
 
 #[test]
+fn a_resumed_reshape_ends_where_an_uninterrupted_one_does() {
+    let dir = Scratch::new("reshape-resume");
+    cylinder_files(&dir);
+    let common = ["--strips", "6", "--quiet"];
+    let run = |args: &[&str]| {
+        let output = lamella(&dir.0, &[args, &common[..]].concat());
+        assert!(matches!(output.status.code(), Some(0 | 3)), "{}", stderr(&output));
+    };
+    run(&["reshape", "--session", "session.bin", "--theta", "45", "--tolerance", "0.2", "--max-iterations", "12", "--out", "whole"]);
+    run(&["reshape", "--session", "session.bin", "--theta", "45", "--tolerance", "0.2", "--max-iterations", "5", "--out", "first"]);
+    run(&["reshape", "--resume", "first/reshape.bin", "--max-iterations", "12", "--out", "rest"]);
+    let read = |path: &str| std::fs::read(dir.path(path)).expect(path);
+    assert_eq!(read_json(&dir.path("first/report.json"))["iterations"].as_u64(), Some(5));
+    assert_eq!(read_json(&dir.path("rest/report.json"))["iterations"], read_json(&dir.path("whole/report.json"))["iterations"]);
+    assert_eq!(read("rest/surface.obj"), read("whole/surface.obj"), "the same surface, bit for bit");
+    assert_eq!(read("rest/deviation.csv"), read("whole/deviation.csv"));
+    // A field session is not a surface session; --theta comes from the saved one.
+    assert_bad_input(&dir.0, &["reshape", "--resume", "session.bin", "--out", "x"], &["session.bin", "not a usable surface session"]);
+    let clash = lamella(&dir.0, &["reshape", "--resume", "first/reshape.bin", "--theta", "30", "--out", "y"]);
+    assert_eq!(clash.status.code(), Some(2), "{}", stderr(&clash));
+}
+
+#[test]
 fn reshape_rejects_bad_input() {
     let dir = Scratch::new("reshape-bad");
     cylinder_files(&dir);

@@ -120,6 +120,10 @@ namespace Lamella.Interop
         public static extern Status lml_reshape_positions(ReshapeHandle reshape, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_reshape_deviations(ReshapeHandle reshape, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_reshape_save(ReshapeHandle reshape, [Out] byte[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_reshape_load(byte[] bytes, UIntPtr length, out ReshapeHandle reshape);
 
         // LmlShading.
         [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_shading_site_default(out ShadingSite site);

@@ -437,20 +437,25 @@ pub struct ReshapeArgs {
     #[command(flatten)]
     pub mesh: MeshArgs,
     /// The field, one value per mesh vertex (field.csv of `field` or `design`); it stays fixed.
-    #[arg(long = "field", value_name = "field.csv", required_unless_present = "session", conflicts_with = "session")]
+    #[arg(long = "field", value_name = "field.csv", required_unless_present_any = ["session", "resume"], conflicts_with_all = ["session", "resume"])]
     pub field_csv: Option<PathBuf>,
     /// Take mesh and field from a saved session (session.bin of `field` or `design`) instead of
     /// --mesh and --field.
-    #[arg(long, value_name = "session.bin", conflicts_with = "mesh")]
+    #[arg(long, value_name = "session.bin", conflicts_with_all = ["mesh", "resume"])]
     pub session: Option<PathBuf>,
+    /// Continue a surface optimisation saved by an earlier `reshape` (its reshape.bin: original
+    /// surface, field, θ, tolerance and the moved surface), bit for bit as if it had not stopped;
+    /// --max-iterations includes the iterations it ran before.
+    #[arg(long, value_name = "reshape.bin", conflicts_with_all = ["mesh", "theta", "tolerance"])]
+    pub resume: Option<PathBuf>,
     /// Target angle θ between the binormals of the level curves and the surface normal, in
     /// degrees, 0 to 180 exclusive.
-    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true)]
-    pub theta: f64,
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true, required_unless_present = "resume")]
+    pub theta: Option<f64>,
     /// Largest distance of a vertex from the original surface: a length (metres, or with mm, cm
-    /// or m) or a percentage of the bounding-box diagonal such as 0.5%.
-    #[arg(long, value_name = "LENGTH|P%", default_value = "1%", allow_hyphen_values = true)]
-    pub tolerance: String,
+    /// or m) or a percentage of the bounding-box diagonal such as 0.5% [default: 1%].
+    #[arg(long, value_name = "LENGTH|P%", allow_hyphen_values = true)]
+    pub tolerance: Option<String>,
     /// Most Levenberg–Marquardt iterations of the surface, 1 to 100000.
     #[arg(long, value_name = "N", default_value_t = 300)]
     pub max_iterations: usize,

@@ -38,8 +38,10 @@ pub fn parse_tolerance(text: &str) -> CliResult<Tolerance> {
 }
 
 fn check(args: &ReshapeArgs) -> CliResult<()> {
-    if !(args.theta.is_finite() && args.theta > 0.0 && args.theta < 180.0) {
-        return Err(out_of_range("theta", args.theta, "between 0 and 180 degrees, exclusive"));
+    if let Some(theta) = args.theta {
+        if !(theta.is_finite() && theta > 0.0 && theta < 180.0) {
+            return Err(out_of_range("theta", theta, "between 0 and 180 degrees, exclusive"));
+        }
     }
     if !(1..=MAX_ITERATIONS_LIMIT).contains(&args.max_iterations) {
         return Err(out_of_range("max-iterations", args.max_iterations, &format!("1 to {MAX_ITERATIONS_LIMIT}")));
@@ -52,6 +54,26 @@ fn check(args: &ReshapeArgs) -> CliResult<()> {
     }
     Ok(())
 }
+
+/// The surface optimisation to run: continued from --resume, or new on the mesh and field of
+/// --session or of --mesh and --field, with --theta and --tolerance.
+fn start(args: &ReshapeArgs) -> CliResult<(ReshapeSolver, String)> {
+    if let Some(path) = &args.resume {
+        let bytes = read_bytes(path)?;
+        let solver = ReshapeSolver::from_bytes(&bytes).map_err(|e| CliError::bad_input(format!("{}: not a usable surface session: {e}", path.display())))?;
+        return Ok((solver, format!("surface session {}", path.display())));
+    }
+    let tolerance = parse_tolerance(args.tolerance.as_deref().unwrap_or(DEFAULT_TOLERANCE))?;
+    let (mesh, field, source) = inputs(args)?;
+    // Invariant: clap requires --theta unless --resume is given.
+    let theta = args.theta.ok_or_else(|| CliError::bad_input("give --theta"))?;
+    let params = ReshapeParams { tolerance, ..ReshapeParams::new(theta) };
+    let solver = ReshapeSolver::new(&mesh, &field, params).map_err(|e| CliError::bad_input(format!("reshape: {e}")))?;
+    Ok((solver, source))
+}
+
+/// `--tolerance` when not given: 1 % of the bounding-box diagonal.
+const DEFAULT_TOLERANCE: &str = "1%";
 
 /// The mesh and field to reshape: from a session, or from --mesh and --field.
 fn inputs(args: &ReshapeArgs) -> CliResult<(TriMesh, Vec<f64>, String)> {
@@ -71,13 +93,14 @@ pub fn run(args: &ReshapeArgs) -> CliResult<()> {
     let started = Instant::now();
     let verbosity = Verbosity::from(args.verbosity);
     check(args)?;
-    let tolerance = parse_tolerance(&args.tolerance)?;
-    let (mesh, field, source) = inputs(args)?;
+    let (mut solver, source) = start(args)?;
     let target: PathBuf = args.out.out.clone().unwrap_or_else(|| PathBuf::from(DEFAULT_OUT));
     let out = OutputDir::create(&target, args.out.force)?;
-    let params = ReshapeParams { tolerance, ..ReshapeParams::new(args.theta) };
-    let mut solver = ReshapeSolver::new(&mesh, &field, params).map_err(|e| CliError::bad_input(format!("reshape: {e}")))?;
-    note(verbosity, &format!("reshape {source}: {} vertices, θ = {}°, tolerance {:.4} m", mesh.vertex_count(), args.theta, solver.report().tolerance));
+    let (mesh, field, theta) = (solver.original().clone(), solver.field().to_vec(), solver.params().theta_degrees);
+    note(
+        verbosity,
+        &format!("reshape {source}: {} vertices, θ = {theta}°, tolerance {:.4} m, from iteration {}", mesh.vertex_count(), solver.report().tolerance, solver.iterations()),
+    );
     while solver.iterations() < args.max_iterations && !solver.is_converged() {
         let report = solver.step(STEP.min(args.max_iterations - solver.iterations())).map_err(|e| CliError::internal(format!("reshape: {e}")))?;
         if verbosity == Verbosity::Verbose {
@@ -87,16 +110,17 @@ pub fn run(args: &ReshapeArgs) -> CliResult<()> {
     let surface_seconds = started.elapsed().as_secs_f64();
     let moved = solver.mesh();
     let deviations = solver.deviations();
-    let run = build_strips(&moved, &field, args.theta, args.strips, None, args.angle_tolerance)?;
+    let run = build_strips(&moved, &field, theta, args.strips, None, args.angle_tolerance)?;
     let mut surface = Vec::new();
     moved.write_obj(&mut surface).map_err(|e| CliError::internal(format!("surface.obj: {e}")))?;
     out.write("surface.obj", surface)?;
     out.write("deviation.csv", deviation_csv(&mesh, &moved, &deviations))?;
+    out.write("reshape.bin", solver.to_bytes())?;
     out.write("curves.obj", curves_obj(&run.curves))?;
     out.write("strips.obj", strips_obj(&run.pattern))?;
     out.write("rulings.obj", rulings_obj(&run.pattern))?;
     out.write("preview.svg", displacement_preview_svg(&moved, &run.pattern, &deviations))?;
-    let report = report_json(&source, args, &solver, &run, [surface_seconds, started.elapsed().as_secs_f64()]);
+    let report = report_json(&source, &solver, &run, [surface_seconds, started.elapsed().as_secs_f64()]);
     out.write("report.json", serde_json::to_string_pretty(&report).map_err(|e| CliError::internal(format!("report.json: {e}")))?)?;
     let target = out.target().display().to_string();
     out.commit()?;
@@ -104,7 +128,7 @@ pub fn run(args: &ReshapeArgs) -> CliResult<()> {
     summary(
         verbosity,
         &format!(
-            "{} iterations{}; deviation max {:.4} m, RMS {:.4} m (tolerance {:.4} m); edge lengths change by up to {:.1} %\n{}\ndone in {:.1} s; wrote {target}/ (surface.obj, deviation.csv, curves.obj, strips.obj, rulings.obj, preview.svg, report.json)",
+            "{} iterations{}; deviation max {:.4} m, RMS {:.4} m (tolerance {:.4} m); edge lengths change by up to {:.1} %\n{}\ndone in {:.1} s; wrote {target}/ (surface.obj, deviation.csv, reshape.bin, curves.obj, strips.obj, rulings.obj, preview.svg, report.json)",
             r.iterations,
             if r.converged { ", converged" } else { "" },
             r.max_deviation,
@@ -140,13 +164,13 @@ fn number(x: f64) -> Value {
     if x.is_finite() { json!(x) } else { Value::Null }
 }
 
-fn report_json(source: &str, args: &ReshapeArgs, solver: &ReshapeSolver, run: &StripRun, seconds: [f64; 2]) -> Value {
+fn report_json(source: &str, solver: &ReshapeSolver, run: &StripRun, seconds: [f64; 2]) -> Value {
     let r = solver.report();
     let w = solver.params().weights;
     let m = &run.pattern.metrics;
     json!({
         "input": source,
-        "theta_degrees": args.theta,
+        "theta_degrees": solver.params().theta_degrees,
         "weights": { "fair": w.fair, "close": w.close, "angle": w.angle, "edge": w.edge },
         "iterations": r.iterations,
         "converged": r.converged,
