@@ -11,6 +11,7 @@ use lamella::ffi::*;
 use lamella::field::{Family, FieldParams, FieldSolver, FIELD_VALUE_LIMIT};
 use lamella::initialisation::{field_from_guide_curves, field_from_strokes, GuideCurveOptions, StrokeOptions};
 use lamella::mesh::{TriMesh, Vec3};
+use lamella::reshape::{ReshapeParams, ReshapeSolver};
 use lamella::surfaces::hall_roof;
 use std::ffi::CStr;
 use std::sync::OnceLock;
@@ -25,6 +26,7 @@ pub fn all() -> Vec<Target> {
     vec![
         Target { name: "obj", text: true, seeds: obj_seeds, run: obj },
         Target { name: "session", text: false, seeds: session_seeds, run: session },
+        Target { name: "reshape_session", text: false, seeds: reshape_session_seeds, run: reshape_session },
         Target { name: "field_csv", text: true, seeds: field_csv_seeds, run: field_csv_target },
         Target { name: "strokes", text: true, seeds: strokes_seeds, run: strokes },
         Target { name: "guides", text: true, seeds: guides_seeds, run: guides },
@@ -119,6 +121,40 @@ fn session(input: &[u8]) -> Verdict {
     };
     if !finite(&solver) {
         return Err("a step made the field non-finite".into());
+    }
+    bounded(outcome)
+}
+
+fn reshape_session_seeds() -> Vec<Vec<u8>> {
+    let mesh = roof();
+    let field: Vec<f64> = mesh.positions().iter().map(|p| p.x + 0.05 * p.y * p.y).collect();
+    let mut solver = ReshapeSolver::new(mesh, &field, ReshapeParams::new(45.0)).expect("a surface session on the roof");
+    let mut seeds = vec![solver.to_bytes()];
+    solver.step(2).expect("two steps");
+    seeds.push(solver.to_bytes());
+    seeds
+}
+
+/// A restored surface session has finite positions, saves to the same bytes, and steps without
+/// panicking, keeping its positions finite.
+fn reshape_session(input: &[u8]) -> Verdict {
+    let mut solver = match ReshapeSolver::from_bytes(input) {
+        Ok(solver) => solver,
+        Err(e) => return bounded(e.to_string()),
+    };
+    let finite = |s: &ReshapeSolver| s.positions().iter().all(|p| p.iter().all(|v| v.is_finite()));
+    if !finite(&solver) {
+        return Err("a restored surface session has a position that is not finite".into());
+    }
+    if solver.to_bytes() != input {
+        return Err("a restored surface session saves to other bytes".into());
+    }
+    let outcome = match solver.step(1) {
+        Ok(report) => format!("stepped {}", report.converged),
+        Err(e) => e.to_string(),
+    };
+    if !finite(&solver) {
+        return Err("a step made a position non-finite".into());
     }
     bounded(outcome)
 }
