@@ -207,6 +207,18 @@ fn a_mixed_facade_keeps_each_regions_behaviour() {
 }
 
 #[test]
+fn a_shading_design_has_the_same_bits_on_any_number_of_threads() {
+    let on = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().expect("a pool");
+        pool.install(|| design(|p| if p.z > 0.0 { VertexLabel::Pass } else { VertexLabel::Block }, 1))
+    };
+    let bits = |d: &Design| -> Vec<u64> { d.field.iter().map(|f| f.to_bits()).chain(d.binormals.iter().flat_map(|b| b.iter().map(|x| x.to_bits()).collect::<Vec<_>>())).collect() };
+    let one = bits(&on(1));
+    assert_eq!(one, bits(&on(2)));
+    assert_eq!(one, bits(&on(3)));
+}
+
+#[test]
 fn the_slope_vote_on_a_vertical_facade_picks_the_slope_orthogonal_to_the_noon_sun() {
     // Horizontal facade lines (east) have slope 0 against the equatorial plane; the tangents
     // orthogonal to the noon arc are east up to ±(δ span), so the vote's bin holds 0°.
