@@ -1812,6 +1812,30 @@ LmlStatus lml_net_start(const struct LmlMesh *mesh,
 // Releases a session. NULL is accepted and ignored. The handle must not be used again.
 void lml_net_free(struct LmlNet *net);
 
+// Serialises the whole session (mesh, both fields with their auxiliary variables, parameters,
+// the intersection target's orientation, weight stage, solver damping) as bytes: the magic
+// `"LMLN"`, a little-endian `uint32_t` format version, then the state. Portable across
+// platforms; a restored session continues bit for bit as the original would have.
+//
+// Two-call pattern: `*needed` is always set to the byte count; if `out` is NULL or `capacity`
+// (in bytes) is smaller, nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned. The
+// buffer stays owned by the caller.
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_net_save(const struct LmlNet *net, uint8_t *out, size_t capacity, size_t *needed);
+
+// Restores a session from `length` bytes written by `lml_net_save` (copied; the caller keeps
+// them). `out` receives the new session, owned by the caller (release with `lml_net_free`); set
+// to NULL on failure.
+//
+// Every restored quantity is checked: the mesh as in `lml_mesh_new`, parameters as in
+// `lml_net_new`, scale factors normal and positive, every value finite, the fields within ±1e100,
+// counters and damping in range.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_CORRUPT_DATA` (empty, truncated, damaged or inconsistent
+// bytes, another kind of session, or another format version: the message says which);
+// `LML_STATUS_INVALID_ARGUMENT` (NULL `out`, NULL `bytes` with a non-zero length).
+LmlStatus lml_net_load(const uint8_t *bytes, size_t length, struct LmlNet **out);
+
 // Runs at most `max_iterations` iterations and writes the state to `*report` (may be NULL).
 //
 // Returns `LML_STATUS_MORE` (step again), `LML_STATUS_CONVERGED`, `LML_STATUS_INVALID_ARGUMENT`

@@ -111,6 +111,17 @@ namespace Lamella.Tests
             using (var net = new NetSolver(mesh, 90.0, 90.0, first, second, 30.0, 90.0))
             {
                 Assert.AreEqual(0, net.Report.Iterations);
+                net.Step(3);
+                using (var restored = NetSolver.Load(net.Save()))
+                {
+                    // A saved session steps on in step with the original, to the bit.
+                    CollectionAssert.AreEqual(net.Field(0), restored.Field(0));
+                    Assert.AreEqual(net.Step(4).Iterations, restored.Step(4).Iterations);
+                    CollectionAssert.AreEqual(net.Field(0), restored.Field(0));
+                    CollectionAssert.AreEqual(net.Field(1), restored.Field(1));
+                }
+                var error = Assert.Throws<LamellaException>(() => NetSolver.Load(new byte[] { 76, 77, 76, 78 }));
+                Assert.AreEqual(Status.CorruptData, error.Status);
                 NetReport report = net.Report;
                 for (int k = 0; k < 20 && !report.IsConverged; k++)
                 {

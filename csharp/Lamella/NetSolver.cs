@@ -63,6 +63,33 @@ namespace Lamella
                 minIntersectionDegrees, intersectionDegrees ?? double.NaN, out handle));
         }
 
+        private NetSolver(NetHandle handle)
+        {
+            this.handle = handle;
+        }
+
+        /// <summary>
+        /// Restores a session saved with <see cref="Save"/> (<c>lml_net_load</c>); it continues bit for bit as the saved one
+        /// would have.
+        /// </summary>
+        /// <exception cref="LamellaException"><see cref="Status.CorruptData"/> for damaged, truncated or foreign bytes (another kind of session, another format version).</exception>
+        public static NetSolver Load(byte[] bytes)
+        {
+            if (bytes == null) throw new ArgumentNullException(nameof(bytes));
+            NetHandle loaded;
+            Native.Check(NativeMethods.lml_net_load(bytes, Native.Size(bytes.Length), out loaded));
+            return new NetSolver(loaded);
+        }
+
+        /// <summary>The whole session as bytes (<c>lml_net_save</c>): mesh, both fields, parameters, solver state.</summary>
+        public byte[] Save()
+        {
+            lock (gate)
+            {
+                return Native.Read((byte[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_net_save(handle, b, c, out n));
+            }
+        }
+
         /// <summary>
         /// The default start of a net (<c>lml_net_start</c>): the first family from the default start search, the second
         /// among the candidates crossing it at 45° or more on average. Returns the two fields (one value per vertex each).

@@ -167,6 +167,48 @@ pub unsafe extern "C" fn lml_net_free(net: *mut LmlNet) {
     });
 }
 
+/// Serialises the whole session (mesh, both fields with their auxiliary variables, parameters,
+/// the intersection target's orientation, weight stage, solver damping) as bytes: the magic
+/// `"LMLN"`, a little-endian `uint32_t` format version, then the state. Portable across
+/// platforms; a restored session continues bit for bit as the original would have.
+///
+/// Two-call pattern: `*needed` is always set to the byte count; if `out` is NULL or `capacity`
+/// (in bytes) is smaller, nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned. The
+/// buffer stays owned by the caller.
+/// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+#[no_mangle]
+pub unsafe extern "C" fn lml_net_save(net: *const LmlNet, out: *mut u8, capacity: usize, needed: *mut usize) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle; `out` writable for `capacity` bytes; writable `needed`.
+        let net = unsafe { handle(net, "net") }?;
+        unsafe { copy_out(&net.solver.to_bytes(), out, capacity, needed, "out") }
+    })
+}
+
+/// Restores a session from `length` bytes written by `lml_net_save` (copied; the caller keeps
+/// them). `out` receives the new session, owned by the caller (release with `lml_net_free`); set
+/// to NULL on failure.
+///
+/// Every restored quantity is checked: the mesh as in `lml_mesh_new`, parameters as in
+/// `lml_net_new`, scale factors normal and positive, every value finite, the fields within ±1e100,
+/// counters and damping in range.
+///
+/// Returns `LML_STATUS_OK`; `LML_STATUS_CORRUPT_DATA` (empty, truncated, damaged or inconsistent
+/// bytes, another kind of session, or another format version: the message says which);
+/// `LML_STATUS_INVALID_ARGUMENT` (NULL `out`, NULL `bytes` with a non-zero length).
+#[no_mangle]
+pub unsafe extern "C" fn lml_net_load(bytes: *const u8, length: usize, out: *mut *mut LmlNet) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): writable `out`; `bytes` readable for `length` bytes.
+        let mut out = unsafe { Out::new(out, "out") }?;
+        out.set(std::ptr::null_mut());
+        let bytes = unsafe { input(bytes, length, "bytes") }?;
+        let solver = NetSolver::from_bytes(bytes)?;
+        out.set_owned(LmlNet { mesh: Arc::new(solver.mesh()), solver });
+        Ok(LmlStatus::Ok)
+    })
+}
+
 /// Runs at most `max_iterations` iterations and writes the state to `*report` (may be NULL).
 ///
 /// Returns `LML_STATUS_MORE` (step again), `LML_STATUS_CONVERGED`, `LML_STATUS_INVALID_ARGUMENT`

@@ -15,19 +15,20 @@ use crate::solver::{LeastSquaresProblem, LevenbergMarquardt};
 /// As [`crate::field::FieldSolver`], it works on a copy of the mesh scaled to mean edge length 1,
 /// each field scaled to mean `‖∇‖` 1; values handed back are in the caller's units.
 pub struct NetSolver {
-    problem: NetProblem,
-    lm: LevenbergMarquardt,
-    params: NetParams,
-    x: Vec<f64>,
-    /// Internal field `k` = caller field `k` × `field_scales[k]`; internal lengths = caller × `length_scale`.
-    field_scales: Vec<f64>,
-    length_scale: f64,
-    stage: usize,
-    stage_iterations: usize,
-    slow_iterations: usize,
-    iterations: usize,
-    converged: bool,
-    last_report: NetReport,
+    /// The mesh as given (the caller's units).
+    pub(super) given: TriMesh,
+    pub(super) problem: NetProblem,
+    pub(super) lm: LevenbergMarquardt,
+    pub(super) params: NetParams,
+    pub(super) x: Vec<f64>,
+    /// Internal field `k` = caller field `k` × `field_scales[k]` (lengths are scaled to mean edge 1).
+    pub(super) field_scales: Vec<f64>,
+    pub(super) stage: usize,
+    pub(super) stage_iterations: usize,
+    pub(super) slow_iterations: usize,
+    pub(super) iterations: usize,
+    pub(super) converged: bool,
+    pub(super) last_report: NetReport,
 }
 
 impl NetSolver {
@@ -45,7 +46,8 @@ impl NetSolver {
         for field in fields {
             crate::field::validate_field(mesh, field)?;
         }
-        let (unit_mesh, length_scale) = mesh.unit_scaled();
+        let (unit_mesh, _) = mesh.unit_scaled();
+        let given = mesh.clone();
         let mut field_scales = Vec::with_capacity(fields.len());
         for field in fields {
             let gradient = crate::field::mean_gradient_norm(&unit_mesh, field);
@@ -54,34 +56,47 @@ impl NetSolver {
             }
             field_scales.push(1.0 / gradient);
         }
-        let term = intersection_term(&unit_mesh, fields, &params);
-        let (stage, weights) = stage_weights(&params.field, 0);
-        let problem = NetProblem::new(&unit_mesh, &params.families, weights, term);
+        let target = oriented_target(&unit_mesh, fields, &params);
+        let mut solver = NetSolver::assemble(given, unit_mesh, params, target, field_scales, 0)?;
+        for (k, (field, scale)) in fields.iter().zip(&solver.field_scales).enumerate() {
+            let start = solver.problem.field_start(k);
+            solver.x[start..start + field.len()].iter_mut().zip(field).for_each(|(x, f)| *x = f * scale);
+        }
+        for (k, field) in solver.problem.fields().iter().enumerate() {
+            initialize_auxiliaries(field, &mut solver.x[solver.problem.field_start(k)..]);
+        }
+        solver.last_report = solver.measure(0, 0);
+        Ok(solver)
+    }
+
+    /// A solver in weight stage `stage` with every variable zero, on an already unit-scaled mesh,
+    /// for the oriented target `(cos γ, sin γ)` of the intersection term.
+    pub(super) fn assemble(
+        given: TriMesh,
+        unit_mesh: TriMesh,
+        params: NetParams,
+        target: (f64, f64),
+        field_scales: Vec<f64>,
+        stage: usize,
+    ) -> Result<NetSolver, FieldError> {
+        let (stage, weights) = stage_weights(&params.field, stage);
+        let problem = NetProblem::new(&unit_mesh, &params.families, weights, intersection_term(&params, target));
         let lm = LevenbergMarquardt::new(&problem, params.field.lm.clone())?;
-        let mut x = vec![0.0; problem.variable_count()];
-        for (k, (field, scale)) in fields.iter().zip(&field_scales).enumerate() {
-            let start = problem.field_start(k);
-            x[start..start + field.len()].iter_mut().zip(field).for_each(|(x, f)| *x = f * scale);
-        }
-        for (k, field) in problem.fields().iter().enumerate() {
-            initialize_auxiliaries(field, &mut x[problem.field_start(k)..]);
-        }
-        let mut solver = NetSolver {
+        let x = vec![0.0; problem.variable_count()];
+        Ok(NetSolver {
+            given,
             problem,
             lm,
             params,
             x,
             field_scales,
-            length_scale,
             stage,
             stage_iterations: 0,
             slow_iterations: 0,
             iterations: 0,
             converged: false,
             last_report: NetReport::default(),
-        };
-        solver.last_report = solver.measure(0, 0);
-        Ok(solver)
+        })
     }
 
     /// Runs at most `max_iterations` Levenberg–Marquardt iterations and reports the state.
@@ -135,9 +150,9 @@ impl NetSolver {
         (0..self.params.families.len()).map(|k| self.field(k)).collect()
     }
 
-    /// The mesh in the caller's units.
+    /// The mesh in the caller's units, as given.
     pub fn mesh(&self) -> TriMesh {
-        self.problem.mesh().scaled(1.0 / self.length_scale)
+        self.given.clone()
     }
 
     pub fn params(&self) -> &NetParams {
@@ -238,11 +253,10 @@ impl NetSolver {
     }
 }
 
-/// The intersection term of `params` for the start `fields`: a target angle oriented as the
-/// fields' mean oriented angle is (see [`NetSolver::new`]).
-fn intersection_term(mesh: &TriMesh, fields: &[Vec<f64>], params: &NetParams) -> IntersectionTerm {
-    let min_sine = params.min_intersection_degrees.to_radians().sin();
-    let target = match (params.intersection_degrees, intersection::mean_orientation(mesh, &fields[0], &fields[1])) {
+/// The target `(cos γ, sin γ)` of `params` for the start `fields`, oriented as the fields' mean
+/// oriented angle is (see [`NetSolver::new`]); `(0, 1)` without a target.
+fn oriented_target(mesh: &TriMesh, fields: &[Vec<f64>], params: &NetParams) -> (f64, f64) {
+    match (params.intersection_degrees, intersection::mean_orientation(mesh, &fields[0], &fields[1])) {
         (Some(gamma), mean) => {
             let (c, s) = mean.unwrap_or((0.0, 1.0));
             let (sin, cos) = gamma.to_radians().sin_cos();
@@ -254,7 +268,12 @@ fn intersection_term(mesh: &TriMesh, fields: &[Vec<f64>], params: &NetParams) ->
             }).1
         }
         (None, _) => (0.0, 1.0),
-    };
+    }
+}
+
+/// The intersection term of `params` with the oriented `target`.
+fn intersection_term(params: &NetParams, target: (f64, f64)) -> IntersectionTerm {
+    let min_sine = params.min_intersection_degrees.to_radians().sin();
     let target_weight = if params.intersection_degrees.is_some() { params.intersection_weight } else { 0.0 };
     IntersectionTerm { target, target_weight, min_sine, min_weight: params.min_intersection_weight }
 }

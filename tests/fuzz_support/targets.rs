@@ -11,6 +11,7 @@ use lamella::ffi::*;
 use lamella::field::{Family, FieldParams, FieldSolver, FIELD_VALUE_LIMIT};
 use lamella::initialisation::{field_from_guide_curves, field_from_strokes, GuideCurveOptions, StrokeOptions};
 use lamella::mesh::{TriMesh, Vec3};
+use lamella::net::{NetParams, NetSolver};
 use lamella::reshape::{ReshapeParams, ReshapeSolver};
 use lamella::surfaces::hall_roof;
 use std::ffi::CStr;
@@ -27,6 +28,7 @@ pub fn all() -> Vec<Target> {
         Target { name: "obj", text: true, seeds: obj_seeds, run: obj },
         Target { name: "session", text: false, seeds: session_seeds, run: session },
         Target { name: "reshape_session", text: false, seeds: reshape_session_seeds, run: reshape_session },
+        Target { name: "net_session", text: false, seeds: net_session_seeds, run: net_session },
         Target { name: "field_csv", text: true, seeds: field_csv_seeds, run: field_csv_target },
         Target { name: "strokes", text: true, seeds: strokes_seeds, run: strokes },
         Target { name: "guides", text: true, seeds: guides_seeds, run: guides },
@@ -155,6 +157,43 @@ fn reshape_session(input: &[u8]) -> Verdict {
     };
     if !finite(&solver) {
         return Err("a step made a position non-finite".into());
+    }
+    bounded(outcome)
+}
+
+fn net_session_seeds() -> Vec<Vec<u8>> {
+    let mesh = roof();
+    let g: Vec<f64> = mesh.positions().iter().map(|p| p.y - 0.1 * p.x).collect();
+    let theta = Family::PseudoGeodesic { theta_degrees: 60.0 };
+    let mut params = NetParams::new(theta, theta);
+    params.intersection_degrees = Some(80.0);
+    let mut solver = NetSolver::new(mesh, &[axis_field(mesh), g], params).expect("a net on the roof");
+    let mut seeds = vec![solver.to_bytes()];
+    solver.step(2).expect("two steps");
+    seeds.push(solver.to_bytes());
+    seeds
+}
+
+/// A restored net session has finite fields, saves to the same bytes, and steps without
+/// panicking, keeping its fields finite.
+fn net_session(input: &[u8]) -> Verdict {
+    let mut solver = match NetSolver::from_bytes(input) {
+        Ok(solver) => solver,
+        Err(e) => return bounded(e.to_string()),
+    };
+    let finite = |s: &NetSolver| s.fields().iter().flatten().all(|f| f.is_finite() && f.abs() <= FIELD_VALUE_LIMIT);
+    if !finite(&solver) {
+        return Err("a restored net session has a field value that is not finite or out of range".into());
+    }
+    if solver.to_bytes() != input {
+        return Err("a restored net session saves to other bytes".into());
+    }
+    let outcome = match solver.step(1) {
+        Ok(report) => format!("stepped {}", report.converged),
+        Err(e) => e.to_string(),
+    };
+    if !finite(&solver) {
+        return Err("a step made a net field non-finite".into());
     }
     bounded(outcome)
 }

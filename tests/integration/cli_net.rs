@@ -96,6 +96,29 @@ fn family_names_and_angles_are_checked() {
 }
 
 #[test]
+fn a_resumed_net_ends_where_an_uninterrupted_one_does() {
+    let dir = Scratch::new("net-resume");
+    let mesh = hypar_obj(&dir);
+    let mesh = mesh.to_str().expect("path");
+    let run = |args: &[&str]| {
+        let output = lamella(&dir.0, &[args, &["--lines", "6", "--quiet"][..]].concat());
+        assert!(matches!(output.status.code(), Some(0 | 3)), "{}", stderr(&output));
+    };
+    run(&["net", "--mesh", mesh, "--families", "A,A", "--max-iterations", "9", "--out", "whole"]);
+    run(&["net", "--mesh", mesh, "--families", "A,A", "--max-iterations", "4", "--out", "first"]);
+    run(&["net", "--resume", "first/net.bin", "--max-iterations", "9", "--out", "rest"]);
+    let read = |path: &str| std::fs::read(dir.path(path)).expect(path);
+    assert_eq!(read_json(&dir.path("first/report.json"))["iterations"].as_u64(), Some(4));
+    assert_eq!(read_json(&dir.path("rest/report.json"))["iterations"], read_json(&dir.path("whole/report.json"))["iterations"]);
+    for file in ["curves_0.obj", "curves_1.obj", "net.obj"] {
+        assert_eq!(read(&format!("rest/{file}")), read(&format!("whole/{file}")), "{file} differs");
+    }
+    assert_bad_input(&dir.0, &["net", "--resume", "hypar.obj", "--out", "x"], &["hypar.obj", "not a usable net session"]);
+    let clash = lamella(&dir.0, &["net", "--resume", "first/net.bin", "--families", "G,G", "--out", "y"]);
+    assert_eq!(clash.status.code(), Some(2), "{}", stderr(&clash));
+}
+
+#[test]
 fn a_net_crossing_below_the_minimum_angle_exits_3_and_says_where() {
     // The rulings of z = xy/5 over [−5, 5]² cross at 60° in the corners and at 90° in the middle:
     // a minimum of 85° cannot be held by an A,A net, so the verdict must say so.

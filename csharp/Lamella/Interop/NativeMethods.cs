@@ -91,6 +91,10 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_net_report(NetHandle net, out NetReportRecord report);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_net_field(NetHandle net, uint k, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_net_save(NetHandle net, [Out] byte[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_net_load(byte[] bytes, UIntPtr length, out NetHandle net);
 
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_curves_new_from_net(NetHandle net, uint k, UIntPtr count, double spacing, out CurvesHandle curves);

@@ -395,8 +395,13 @@ pub struct NetArgs {
     pub mesh: MeshArgs,
     /// The two families, comma-separated: P<θ> (pseudo-geodesics of angle θ in degrees), G
     /// (geodesics) or A (asymptotic curves), e.g. P60,P60 or A,A.
-    #[arg(long, value_name = "F,G")]
-    pub families: String,
+    #[arg(long, value_name = "F,G", required_unless_present = "resume")]
+    pub families: Option<String>,
+    /// Continue a net optimisation saved by an earlier `net` (its net.bin: mesh, families,
+    /// angles and both fields), bit for bit as if it had not stopped; --max-iterations includes
+    /// the iterations it ran before.
+    #[arg(long, value_name = "net.bin", conflicts_with_all = ["mesh", "families", "angle", "min_angle"])]
+    pub resume: Option<PathBuf>,
     /// Target intersection angle of the two families in degrees, in (0, 180), held as a weak term
     /// [default: none, only --min-angle is held].
     #[arg(long, value_name = "DEGREES")]

@@ -8,7 +8,7 @@ use crate::config::DEFAULT_OUT;
 use crate::console::err_line;
 use crate::error::{CliError, CliResult};
 use crate::fabrication_files::{self, cli_error, overstress_warning, report_section, summary_line};
-use crate::mesh_input::{load_mesh, mesh_name};
+use crate::mesh_input::{load_mesh, mesh_name, read_bytes};
 use crate::output_dir::OutputDir;
 use crate::progress::{note, summary, Verbosity};
 use crate::strip_obj::{curves_obj, strips_obj};
@@ -19,6 +19,7 @@ use crate::view_cmd::write_view;
 use lamella::fabrication::{plan_fabrication, FabricationStrip};
 use lamella::field::Family;
 use lamella::initialisation::SearchOptions;
+use lamella::mesh::TriMesh;
 use lamella::net::{flat_point, strip_net, NetParams, NetReport, NetSolver, Node, QuadNet, StripNet};
 use lamella::strips::{PatternMetrics, StripPattern};
 use serde_json::{json, Value};
@@ -68,23 +69,37 @@ fn family_label(family: &Family) -> String {
 /// the minimum angle is held by a penalty (Sec. 4.1), which lets a face sit just under it.
 const MIN_ANGLE_SLACK_DEGREES: f64 = 1.0;
 
-pub fn run(args: &NetArgs) -> CliResult<()> {
-    let started = Instant::now();
-    let verbosity = Verbosity::from(args.verbosity);
-    let families = parse_families(&args.families)?;
+/// The net optimisation to run, its surface and the surface's name: continued from --resume, or
+/// new from the default start of --families on --mesh.
+fn start(args: &NetArgs) -> CliResult<(NetSolver, TriMesh, String)> {
+    if let Some(path) = &args.resume {
+        let bytes = read_bytes(path)?;
+        let solver = NetSolver::from_bytes(&bytes).map_err(|e| CliError::bad_input(format!("{}: not a usable net session: {e}", path.display())))?;
+        let mesh = solver.mesh();
+        return Ok((solver, mesh, format!("net session {}", path.display())));
+    }
+    // Invariant: clap requires --families unless --resume is given.
+    let families = parse_families(args.families.as_deref().ok_or_else(|| CliError::bad_input("give --families"))?)?;
     let mut params = NetParams::new(families[0], families[1]);
     params.intersection_degrees = args.angle;
     params.min_intersection_degrees = args.min_angle;
     params.validate().map_err(|e| CliError::bad_input(format!("net: {e}")))?;
-    let fabrication = fabrication_files::requested(&args.fabrication).then(|| fabrication_files::params(&args.fabrication, None)).transpose()?;
     let mesh = load_mesh(args.mesh.mesh.as_deref())?;
-    let name = mesh_name(args.mesh.mesh.as_deref());
+    let fields = lamella::net::net_start(&mesh, &params, &SearchOptions::default()).map_err(|e| CliError::bad_input(format!("start: {e}")))?;
+    let solver = NetSolver::new(&mesh, &fields, params).map_err(|e| CliError::bad_input(format!("net: {e}")))?;
+    Ok((solver, mesh, mesh_name(args.mesh.mesh.as_deref())))
+}
+
+pub fn run(args: &NetArgs) -> CliResult<()> {
+    let started = Instant::now();
+    let verbosity = Verbosity::from(args.verbosity);
+    let fabrication = fabrication_files::requested(&args.fabrication).then(|| fabrication_files::params(&args.fabrication, None)).transpose()?;
+    let (mut solver, mesh, name) = start(args)?;
+    let families = solver.params().families.clone();
     let target: PathBuf = args.out.out.clone().unwrap_or_else(|| PathBuf::from(DEFAULT_OUT));
     let out = OutputDir::create(&target, args.out.force)?;
     let labels: Vec<String> = families.iter().map(family_label).collect();
-    note(verbosity, &format!("{name}: {} vertices; net {}", mesh.vertex_count(), labels.join(", ")));
-    let fields = lamella::net::net_start(&mesh, &params, &SearchOptions::default()).map_err(|e| CliError::bad_input(format!("start: {e}")))?;
-    let mut solver = NetSolver::new(&mesh, &fields, params).map_err(|e| CliError::bad_input(format!("net: {e}")))?;
+    note(verbosity, &format!("{name}: {} vertices; net {}, from iteration {}", mesh.vertex_count(), labels.join(", "), solver.iterations()));
     while solver.iterations() < args.max_iterations && !solver.is_converged() {
         let report = solver.step(STEP.min(args.max_iterations - solver.iterations())).map_err(|e| CliError::internal(format!("net solve: {e}")))?;
         if verbosity == Verbosity::Verbose {
@@ -109,6 +124,7 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
         out.write(&format!("strips_{k}.obj"), strips_obj(&run.pattern))?;
     }
     out.write("net.obj", net_obj(&net))?;
+    out.write("net.bin", solver.to_bytes())?;
     out.write("nodes.csv", nodes_csv(&nodes))?;
     out.write("unrolled.svg", cut_sheet_svg(&cut_pieces(&runs, &nodes)))?;
     out.write("preview.svg", preview_svg(&mesh, &merged(&runs)))?;
@@ -160,10 +176,11 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
     )?;
     let mut missed: Vec<String> =
         runs.iter().zip(&labels).filter(|(run, _)| !run.pattern.verdict.is_acceptable()).map(|(run, label)| format!("family {label}: {}", run.pattern.verdict.message())).collect();
-    if r.intersection.min_degrees < args.min_angle - MIN_ANGLE_SLACK_DEGREES {
+    let min_angle = solver.params().min_intersection_degrees;
+    if r.intersection.min_degrees < min_angle - MIN_ANGLE_SLACK_DEGREES {
         missed.push(format!(
-            "the families cross at {:.1}° (below the minimum {:.1}° on {} faces); try a smaller --min-angle, other families or another start",
-            r.intersection.min_degrees, args.min_angle, r.intersection.faces_below_min
+            "the families cross at {:.1}° (below the minimum {min_angle:.1}° on {} faces); try a smaller --min-angle, other families or another start",
+            r.intersection.min_degrees, r.intersection.faces_below_min
         ));
     }
     if missed.is_empty() {
