@@ -103,28 +103,54 @@ fn session_seeds() -> Vec<Vec<u8>> {
     seeds
 }
 
-/// A restored session has a finite field within the value limit, saves to the same bytes, and
-/// steps without panicking, keeping its field finite.
-fn session(input: &[u8]) -> Verdict {
-    let mut solver = match FieldSolver::from_bytes(input) {
-        Ok(solver) => solver,
-        Err(e) => return bounded(e.to_string()),
-    };
-    let finite = |s: &FieldSolver| s.field().iter().all(|f| f.is_finite() && f.abs() <= FIELD_VALUE_LIMIT);
-    if !finite(&solver) {
-        return Err("a restored session has a field value that is not finite or out of range".into());
+/// What a saved-session loader must keep: a restored session's values (`finite`) are finite and
+/// in range, it saves to the very bytes it came from, and one step (`step`, which describes its
+/// outcome) neither panics nor makes a value non-finite. `what` names the kind of session.
+struct SessionChecks<S> {
+    what: &'static str,
+    load: fn(&[u8]) -> Result<S, String>,
+    save: fn(&S) -> Vec<u8>,
+    finite: fn(&S) -> bool,
+    step: fn(&mut S) -> String,
+}
+
+impl<S> SessionChecks<S> {
+    fn run(&self, input: &[u8]) -> Verdict {
+        let mut session = match (self.load)(input) {
+            Ok(session) => session,
+            Err(message) => return bounded(message),
+        };
+        if !(self.finite)(&session) {
+            return Err(format!("a restored {} session has a value that is not finite or out of range", self.what));
+        }
+        if (self.save)(&session) != input {
+            return Err(format!("a restored {} session saves to other bytes", self.what));
+        }
+        let outcome = (self.step)(&mut session);
+        if !(self.finite)(&session) {
+            return Err(format!("a step made a value of a {} session non-finite", self.what));
+        }
+        bounded(outcome)
     }
-    if solver.to_bytes() != input {
-        return Err("a restored session saves to other bytes".into());
-    }
-    let outcome = match solver.step(1) {
-        Ok(report) => format!("stepped {}", report.converged),
+}
+
+/// "stepped true|false", or the error.
+fn stepped<R, E: std::fmt::Display>(result: Result<R, E>, converged: impl Fn(&R) -> bool) -> String {
+    match result {
+        Ok(report) => format!("stepped {}", converged(&report)),
         Err(e) => e.to_string(),
-    };
-    if !finite(&solver) {
-        return Err("a step made the field non-finite".into());
     }
-    bounded(outcome)
+}
+
+fn session(input: &[u8]) -> Verdict {
+    SessionChecks {
+        what: "field",
+        load: |b| FieldSolver::from_bytes(b).map_err(|e| e.to_string()),
+        save: FieldSolver::to_bytes,
+        finite: |s| s.field().iter().all(|f| f.is_finite() && f.abs() <= FIELD_VALUE_LIMIT),
+        step: |s| stepped(s.step(1), |r| r.converged),
+    }
+    .run(input)
 }
 
 fn reshape_session_seeds() -> Vec<Vec<u8>> {
@@ -137,28 +163,15 @@ fn reshape_session_seeds() -> Vec<Vec<u8>> {
     seeds
 }
 
-/// A restored surface session has finite positions, saves to the same bytes, and steps without
-/// panicking, keeping its positions finite.
 fn reshape_session(input: &[u8]) -> Verdict {
-    let mut solver = match ReshapeSolver::from_bytes(input) {
-        Ok(solver) => solver,
-        Err(e) => return bounded(e.to_string()),
-    };
-    let finite = |s: &ReshapeSolver| s.positions().iter().all(|p| p.iter().all(|v| v.is_finite()));
-    if !finite(&solver) {
-        return Err("a restored surface session has a position that is not finite".into());
+    SessionChecks {
+        what: "surface",
+        load: |b| ReshapeSolver::from_bytes(b).map_err(|e| e.to_string()),
+        save: ReshapeSolver::to_bytes,
+        finite: |s| s.positions().iter().all(|p| p.iter().all(|v| v.is_finite())),
+        step: |s| stepped(s.step(1), |r| r.converged),
     }
-    if solver.to_bytes() != input {
-        return Err("a restored surface session saves to other bytes".into());
-    }
-    let outcome = match solver.step(1) {
-        Ok(report) => format!("stepped {}", report.converged),
-        Err(e) => e.to_string(),
-    };
-    if !finite(&solver) {
-        return Err("a step made a position non-finite".into());
-    }
-    bounded(outcome)
+    .run(input)
 }
 
 fn net_session_seeds() -> Vec<Vec<u8>> {
@@ -174,28 +187,15 @@ fn net_session_seeds() -> Vec<Vec<u8>> {
     seeds
 }
 
-/// A restored net session has finite fields, saves to the same bytes, and steps without
-/// panicking, keeping its fields finite.
 fn net_session(input: &[u8]) -> Verdict {
-    let mut solver = match NetSolver::from_bytes(input) {
-        Ok(solver) => solver,
-        Err(e) => return bounded(e.to_string()),
-    };
-    let finite = |s: &NetSolver| s.fields().iter().flatten().all(|f| f.is_finite() && f.abs() <= FIELD_VALUE_LIMIT);
-    if !finite(&solver) {
-        return Err("a restored net session has a field value that is not finite or out of range".into());
+    SessionChecks {
+        what: "net",
+        load: |b| NetSolver::from_bytes(b).map_err(|e| e.to_string()),
+        save: NetSolver::to_bytes,
+        finite: |s| s.fields().iter().flatten().all(|f| f.is_finite() && f.abs() <= FIELD_VALUE_LIMIT),
+        step: |s| stepped(s.step(1), |r| r.converged),
     }
-    if solver.to_bytes() != input {
-        return Err("a restored net session saves to other bytes".into());
-    }
-    let outcome = match solver.step(1) {
-        Ok(report) => format!("stepped {}", report.converged),
-        Err(e) => e.to_string(),
-    };
-    if !finite(&solver) {
-        return Err("a step made a net field non-finite".into());
-    }
-    bounded(outcome)
+    .run(input)
 }
 
 fn field_csv_seeds() -> Vec<Vec<u8>> {
