@@ -657,6 +657,20 @@ typedef struct LmlNode {
   // Angle between the two rulings as lines, in degrees, [0°, 90°]: 0 for a torsion-free node
   // (Sec. 5.2).
   double ruling_angle_degrees;
+  // Sec. 5.1 diagnostics of each strip at its centre-line vertex nearest to the node: 1 when
+  // the strip bends there, so that the next three are defined (else they are 0: on a straight
+  // stretch the conical curvature has no value).
+  uint32_t diagnostics_defined[2];
+  // 1 when the singular point of the strip's ruling there lies inside the strip or within one
+  // strip width of it (Prop. 1), else 0.
+  uint32_t singular_point_near[2];
+  // Conical curvature k = τ/κ.
+  double conical_curvature[2];
+  // Angle atan |k| in degrees between the binormal and the ruling of the rectifying developable.
+  double darboux_angle_degrees[2];
+  // κ k² v² / 2 at v = half the strip width (Prop. 2): how far the binormal's point at the strip
+  // edge lies from the rectifying developable, in the mesh's units.
+  double binormal_offset[2];
 } LmlNode;
 
 // The state of a surface optimisation after `lml_reshape_step` (written by the library; the

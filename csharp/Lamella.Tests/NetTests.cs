@@ -89,6 +89,12 @@ namespace Lamella.Tests
                     Assert.Greater(node.RulingAngleDegrees, 45.0);
                     meanAngle += node.RulingAngleDegrees / nodes.Length;
                     Assert.AreEqual(1.0, Math.Sqrt(node.Axis[0] * node.Axis[0] + node.Axis[1] * node.Axis[1] + node.Axis[2] * node.Axis[2]), 1e-9);
+                    // Sec. 5.1 on the first family, horizontal circles: no torsion, so k = 0 and the binormal is the
+                    // rectifying developable's ruling.
+                    Assert.IsTrue(node.ConicalCurvature[0].HasValue, "a circle bends at every node");
+                    Assert.Less(Math.Abs(node.ConicalCurvature[0].Value), 0.1);
+                    Assert.Less(node.DarbouxAngleDegrees[0].Value, 6.0);
+                    Assert.GreaterOrEqual(node.BinormalOffset[0].Value, 0.0);
                 }
                 Assert.Greater(meanAngle, 80.0);
             }

@@ -17,6 +17,17 @@ namespace Lamella
             Position = (double[])r.Position.Clone();
             Axis = (double[])r.Axis.Clone();
             RulingAngleDegrees = r.RulingAngleDegrees;
+            ConicalCurvature = new double?[2];
+            DarbouxAngleDegrees = new double?[2];
+            BinormalOffset = new double?[2];
+            for (int k = 0; k < 2; k++)
+            {
+                if (r.DiagnosticsDefined[k] == 0) continue;
+                ConicalCurvature[k] = r.ConicalCurvature[k];
+                DarbouxAngleDegrees[k] = r.DarbouxAngleDegrees[k];
+                BinormalOffset[k] = r.BinormalOffset[k];
+            }
+            SingularPointNear = new[] { r.SingularPointNear[0] != 0, r.SingularPointNear[1] != 0 };
         }
 
         /// <summary>Index of the crossing among the net's vertices.</summary>
@@ -31,6 +42,14 @@ namespace Lamella
         public double[] Axis { get; }
         /// <summary>Angle between the two rulings as lines, in [0°, 90°]: 0 for a torsion-free node (Sec. 5.2).</summary>
         public double RulingAngleDegrees { get; }
+        /// <summary>Each strip's conical curvature k = τ/κ at its centre-line vertex nearest to the node (Sec. 5.1); null where the strip is straight.</summary>
+        public double?[] ConicalCurvature { get; }
+        /// <summary>Each strip's angle atan |k| between binormal and the rectifying developable's ruling there; null where undefined.</summary>
+        public double?[] DarbouxAngleDegrees { get; }
+        /// <summary>Prop. 2's κ k² v² / 2 at half the strip width, per strip: the binormal point's distance from the developable; null where undefined.</summary>
+        public double?[] BinormalOffset { get; }
+        /// <summary>Per strip: the singular point of its ruling lies inside the strip or within one strip width of it (Prop. 1).</summary>
+        public bool[] SingularPointNear { get; }
     }
 
     /// <summary>

@@ -34,6 +34,20 @@ pub struct LmlNode {
     /// Angle between the two rulings as lines, in degrees, [0°, 90°]: 0 for a torsion-free node
     /// (Sec. 5.2).
     pub ruling_angle_degrees: f64,
+    /// Sec. 5.1 diagnostics of each strip at its centre-line vertex nearest to the node: 1 when
+    /// the strip bends there, so that the next three are defined (else they are 0: on a straight
+    /// stretch the conical curvature has no value).
+    pub diagnostics_defined: [u32; 2],
+    /// 1 when the singular point of the strip's ruling there lies inside the strip or within one
+    /// strip width of it (Prop. 1), else 0.
+    pub singular_point_near: [u32; 2],
+    /// Conical curvature k = τ/κ.
+    pub conical_curvature: [f64; 2],
+    /// Angle atan |k| in degrees between the binormal and the ruling of the rectifying developable.
+    pub darboux_angle_degrees: [f64; 2],
+    /// κ k² v² / 2 at v = half the strip width (Prop. 2): how far the binormal's point at the strip
+    /// edge lies from the rectifying developable, in the mesh's units.
+    pub binormal_offset: [f64; 2],
 }
 
 impl From<&Node> for LmlNode {
@@ -45,6 +59,11 @@ impl From<&Node> for LmlNode {
             position: [n.position.x, n.position.y, n.position.z],
             axis: [n.axis.x, n.axis.y, n.axis.z],
             ruling_angle_degrees: n.ruling_angle_degrees,
+            diagnostics_defined: n.diagnostics.map(|d| u32::from(d.conical_curvature.is_some() && d.darboux_angle_degrees.is_some() && d.binormal_offset.is_some())),
+            singular_point_near: n.diagnostics.map(|d| u32::from(d.singular_point_near)),
+            conical_curvature: n.diagnostics.map(|d| d.conical_curvature.unwrap_or(0.0)),
+            darboux_angle_degrees: n.diagnostics.map(|d| d.darboux_angle_degrees.unwrap_or(0.0)),
+            binormal_offset: n.diagnostics.map(|d| d.binormal_offset.unwrap_or(0.0)),
         }
     }
 }

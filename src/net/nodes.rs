@@ -1,12 +1,14 @@
 //! The nodes of a gridshell (paper Sec. 5.1): where a strip of one family crosses a strip of the
 //! other. At each crossing of the net ([`super::QuadNet`]) the strip of each family built on that
 //! level is located, and the node gets both strip ids, its arc length along each strip's centre
-//! line, the node axis (the mean of the two strips' rulings there) and the angle between the two
-//! rulings (0 for a torsion-free node, Sec. 5.2).
+//! line, the node axis (the mean of the two strips' rulings there), the angle between the two
+//! rulings (0 for a torsion-free node, Sec. 5.2), and each strip's Sec. 5.1 diagnostics at its
+//! centre-line vertex nearest to the node (conical curvature, binormal–ruling angle, Prop. 2's
+//! offset, the singular point of the ruling).
 
 use super::quad_net::QuadNet;
 use crate::mesh::Vec3;
-use crate::strips::{RectifyingStrip, StripPattern};
+use crate::strips::{RectifyingStrip, StripPattern, VertexDiagnostics};
 
 /// One node.
 #[derive(Clone, Debug, PartialEq)]
@@ -24,6 +26,8 @@ pub struct Node {
     pub axis: Vec3,
     /// Angle between the two rulings as lines, in degrees (`[0°, 90°]`).
     pub ruling_angle_degrees: f64,
+    /// Each strip's diagnostics (Sec. 5.1) at its centre-line vertex nearest to the node.
+    pub diagnostics: [VertexDiagnostics; 2],
 }
 
 /// Where a point projects on a strip's centre line.
@@ -31,12 +35,15 @@ struct OnStrip {
     distance: f64,
     arc_length: f64,
     ruling: Vec3,
+    /// The centre-line vertex nearest to the point.
+    vertex: usize,
 }
 
 /// The nodes of `net` with the strips `patterns[k]` of each family (built on the levels
 /// `net.levels[k]`). A crossing becomes a node when each family has a strip on its level within
 /// `tolerance` (a length) of it; others (e.g. where a strip was skipped) are left out.
 pub fn net_nodes(net: &QuadNet, patterns: [&StripPattern; 2], tolerance: f64) -> Vec<Node> {
+    let diagnostics: [Vec<Vec<VertexDiagnostics>>; 2] = patterns.map(|p| p.strips.iter().map(RectifyingStrip::diagnostics).collect());
     let mut nodes = Vec::new();
     for (index, vertex) in net.vertices.iter().enumerate() {
         let found = [(0, vertex.i), (1, vertex.j)].map(|(k, level)| nearest_strip(patterns[k], net.levels[k][level], &vertex.position, tolerance));
@@ -44,7 +51,8 @@ pub fn net_nodes(net: &QuadNet, patterns: [&StripPattern; 2], tolerance: f64) ->
         let second = if a.ruling.dot(&b.ruling) < 0.0 { -b.ruling } else { b.ruling };
         let axis = (a.ruling + second).try_normalize(0.0).unwrap_or(a.ruling);
         let ruling_angle_degrees = a.ruling.dot(&second).clamp(-1.0, 1.0).acos().to_degrees();
-        nodes.push(Node { vertex: index, strips: [s0, s1], arc_lengths: [a.arc_length, b.arc_length], position: vertex.position, axis, ruling_angle_degrees });
+        let diagnostics = [diagnostics[0][s0][a.vertex], diagnostics[1][s1][b.vertex]];
+        nodes.push(Node { vertex: index, strips: [s0, s1], arc_lengths: [a.arc_length, b.arc_length], position: vertex.position, axis, ruling_angle_degrees, diagnostics });
     }
     nodes
 }
@@ -75,7 +83,7 @@ fn project(strip: &RectifyingStrip, point: &Vec3) -> Option<OnStrip> {
         let distance = (c[s] + edge * t - point).norm();
         if best.as_ref().is_none_or(|b| distance < b.distance) {
             let ruling = (strip.rulings[s] * (1.0 - t) + strip.rulings[s + 1] * t).try_normalize(0.0).unwrap_or(strip.rulings[s]);
-            best = Some(OnStrip { distance, arc_length: arc + t * length, ruling });
+            best = Some(OnStrip { distance, arc_length: arc + t * length, ruling, vertex: if t < 0.5 { s } else { s + 1 } });
         }
         arc += length;
     }

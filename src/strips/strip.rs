@@ -31,6 +31,22 @@ pub struct RectifyingStrip {
     pub warnings: Vec<StripWarning>,
 }
 
+impl RectifyingStrip {
+    /// The strip's width across its centre line: at the first vertex, the part of
+    /// `left − right` orthogonal to the first edge (there `s_0 = width / (2 sin α_0)` exactly);
+    /// 0 for a strip of fewer than two points.
+    pub fn width(&self) -> f64 {
+        let (Some(a), Some(b)) = (self.centre.first(), self.centre.get(1)) else { return 0.0 };
+        let Some(edge) = (b - a).try_normalize(0.0) else { return 0.0 };
+        (self.left[0] - self.right[0]).cross(&edge).norm()
+    }
+
+    /// The Sec. 5.1 diagnostics at every vertex of the centre line ([`super::strip_diagnostics`]).
+    pub fn diagnostics(&self) -> Vec<super::VertexDiagnostics> {
+        super::strip_diagnostics(&self.centre, &self.binormals, &self.rulings, self.width())
+    }
+}
+
 /// A level curve no strip could be built on, and why.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SkippedCurve {

@@ -7,6 +7,7 @@
 #include "harness.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -63,8 +64,8 @@ static void check_strip_net(const LmlNet *net)
     LmlNode *nodes = NULL;
     LmlStatus status;
     uint32_t *ij = NULL, *quads = NULL;
-    double *xyz = NULL, mean_angle = 0.0;
-    size_t k, q, i, needed = 0, count[2] = {0, 0}, vertex_count = 0, quad_count = 0, node_count = 0;
+    double *xyz = NULL, mean_angle = 0.0, worst_conical = 0.0, worst_darboux = 0.0;
+    size_t k, q, i, needed = 0, count[2] = {0, 0}, vertex_count = 0, quad_count = 0, node_count = 0, defined = 0;
 
     CHECK_STATUS(lml_curves_new_from_net(net, 2, 6, 0.8, &curves[0]), LML_STATUS_INVALID_ARGUMENT);
     CHECK_MESSAGE("k");
@@ -150,8 +151,24 @@ static void check_strip_net(const LmlNet *net)
         CHECK(fabs(axis - 1.0) < 1e-9);
         CHECK(node->ruling_angle_degrees > 45.0 && node->ruling_angle_degrees <= 90.0);
         mean_angle += node->ruling_angle_degrees / (double)node_count;
+        /* Sec. 5.1 on the first family, horizontal circles: torsion 0, so k = 0 and the binormal
+         * is the ruling of the rectifying developable (the cylinder's own). */
+        if (node->diagnostics_defined[0]) {
+            defined++;
+            worst_conical = fmax(worst_conical, fabs(node->conical_curvature[0]));
+            worst_darboux = fmax(worst_darboux, node->darboux_angle_degrees[0]);
+            CHECK(fabs(node->darboux_angle_degrees[0] - atan(fabs(node->conical_curvature[0])) * 180.0 / PI) < 1e-9);
+            CHECK(node->binormal_offset[0] >= 0.0);
+        }
+        for (k = 0; k < 2; k++) {
+            CHECK(node->singular_point_near[k] <= 1 && node->diagnostics_defined[k] <= 1);
+            CHECK(node->diagnostics_defined[k] || (node->conical_curvature[k] == 0.0 && node->binormal_offset[k] == 0.0));
+        }
     }
     CHECK(mean_angle > 80.0);
+    printf("  nodes on the circles: k within %.2g, binormal-ruling angle within %.2g deg (%lu of %lu defined)\n", worst_conical,
+           worst_darboux, (unsigned long)defined, (unsigned long)node_count);
+    CHECK(defined * 2 >= node_count && worst_conical < 0.1 && worst_darboux < 6.0);
 
 done:
     lml_strip_net_free(grid);

@@ -66,12 +66,32 @@ fn the_asymptotic_net_of_a_hyperbolic_paraboloid_is_written_with_its_nodes() {
     // nodes.csv: one row per crossing of two strips, on the surface.
     let nodes = std::fs::read_to_string(out.join("nodes.csv")).expect("nodes.csv");
     let mut rows = nodes.lines();
-    assert_eq!(rows.next(), Some("strip_0,strip_1,arc_length_0,arc_length_1,x,y,z,axis_x,axis_y,axis_z,ruling_angle_degrees"));
+    assert_eq!(
+        rows.next(),
+        Some(
+            "strip_0,strip_1,arc_length_0,arc_length_1,x,y,z,axis_x,axis_y,axis_z,ruling_angle_degrees,\
+             conical_curvature_0,darboux_angle_degrees_0,binormal_offset_0,singular_point_near_0,\
+             conical_curvature_1,darboux_angle_degrees_1,binormal_offset_1,singular_point_near_1"
+        )
+    );
     let mut count = 0;
     for row in rows {
         let cells: Vec<&str> = row.split(',').collect();
+        assert_eq!(cells.len(), 19, "{row}");
         assert!(cells[0].starts_with("f0_strip_") && cells[1].starts_with("f1_strip_"), "{row}");
-        let numbers: Vec<f64> = cells[2..].iter().map(|c| c.parse().expect("number")).collect();
+        // Sec. 5.1 per strip: k, atan |k| in degrees and Prop. 2's offset, empty where the strip is
+        // straight there (the rulings of z = xy/5 are), and whether the ruling's singular point is near.
+        for k in 0..2 {
+            let d = &cells[11 + 4 * k..15 + 4 * k];
+            if let Ok(conical) = d[0].parse::<f64>() {
+                let darboux: f64 = d[1].parse().expect("angle with k");
+                assert!((darboux - conical.abs().atan().to_degrees()).abs() < 1e-9 && d[2].parse::<f64>().expect("offset") >= 0.0, "{row}");
+            } else {
+                assert!(d[0].is_empty() && d[1].is_empty() && d[2].is_empty(), "{row}");
+            }
+            assert!(d[3] == "0" || d[3] == "1", "{row}");
+        }
+        let numbers: Vec<f64> = cells[2..11].iter().map(|c| c.parse().expect("number")).collect();
         assert!(numbers[0] >= 0.0 && numbers[1] >= 0.0, "{row}");
         assert!((numbers[4] - numbers[2] * numbers[3] / 5.0).abs() < 0.05, "{row}");
         let axis = (numbers[5] * numbers[5] + numbers[6] * numbers[6] + numbers[7] * numbers[7]).sqrt();

@@ -158,6 +158,16 @@ fn a_pp_net_of_sixty_degrees_on_the_hall_roof_is_reported_as_it_is() {
             assert_eq!(strip.level, net.levels[k][if k == 0 { vertex.i } else { vertex.j }], "node {node:?}: strip on another level");
             let on_strip = point_at_arc_length(&strip.centre, node.arc_lengths[k]);
             assert!((on_strip - node.position).norm() <= 2.0 * edge, "family {k}: the node is {:.3} edges from its arc length", (on_strip - node.position).norm() / edge);
+            // Sec. 5.1 at the node: the strip's diagnostics at its vertex nearest to the node,
+            // and Prop. 2's offset at half the 0.5 m width the strips were built with.
+            let nearest = (0..strip.centre.len()).min_by(|&a, &b| (strip.centre[a] - node.position).norm().total_cmp(&(strip.centre[b] - node.position).norm())).expect("points");
+            let d = node.diagnostics[k];
+            assert_eq!(d, strip.diagnostics()[nearest], "family {k}: node {:?}", node.position);
+            if let (Some(kappa), Some(conical), Some(offset)) = (d.curvature, d.conical_curvature, d.binormal_offset) {
+                assert!((offset - kappa * conical * conical * 0.25 * 0.25 / 2.0).abs() <= 1e-9 * (1.0 + offset), "family {k}: offset {offset}");
+                let darboux = d.darboux_angle_degrees.expect("defined with k");
+                assert!((darboux - conical.abs().atan().to_degrees()).abs() < 1e-9, "family {k}: {darboux}° for k = {conical}");
+            }
         }
         assert!((node.axis.norm() - 1.0).abs() < 1e-12 && (0.0..=90.0).contains(&node.ruling_angle_degrees), "{node:?}");
     }

@@ -99,6 +99,16 @@ namespace Lamella.Interop
         [MarshalAs(UnmanagedType.ByValArray, SizeConst = 3)]
         public double[] Axis;
         public double RulingAngleDegrees;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public uint[] DiagnosticsDefined;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public uint[] SingularPointNear;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public double[] ConicalCurvature;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public double[] DarbouxAngleDegrees;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public double[] BinormalOffset;
     }
 
     /// <summary>

@@ -259,10 +259,15 @@ fn net_obj(net: &QuadNet) -> String {
 
 /// nodes.csv: one row per node.
 fn nodes_csv(nodes: &[Node]) -> String {
-    let mut text = String::from("strip_0,strip_1,arc_length_0,arc_length_1,x,y,z,axis_x,axis_y,axis_z,ruling_angle_degrees\n");
+    let mut text = String::from("strip_0,strip_1,arc_length_0,arc_length_1,x,y,z,axis_x,axis_y,axis_z,ruling_angle_degrees");
+    for k in 0..2 {
+        let _ = write!(text, ",conical_curvature_{k},darboux_angle_degrees_{k},binormal_offset_{k},singular_point_near_{k}");
+    }
+    text.push('\n');
+    let cell = |value: Option<f64>| value.map_or(String::new(), |v| v.to_string());
     for n in nodes {
         let (p, a) = (n.position, n.axis);
-        let _ = writeln!(
+        let _ = write!(
             text,
             "{},{},{},{},{},{},{},{},{},{},{}",
             net_strip_name(0, n.strips[0]),
@@ -277,6 +282,11 @@ fn nodes_csv(nodes: &[Node]) -> String {
             a.z,
             n.ruling_angle_degrees
         );
+        for d in &n.diagnostics {
+            let near = u8::from(d.singular_point_near);
+            let _ = write!(text, ",{},{},{},{near}", cell(d.conical_curvature), cell(d.darboux_angle_degrees), cell(d.binormal_offset));
+        }
+        text.push('\n');
     }
     text
 }
