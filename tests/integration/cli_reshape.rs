@@ -143,3 +143,19 @@ fn design_names_a_reshape_tolerance_that_makes_its_strips_acceptable() {
     let worst = crate::reshape_cylinder::brute_force_distances(moved.positions(), &mesh).into_iter().fold(0.0, f64::max);
     assert!(worst > 0.0 && worst <= percent / 100.0 * (high - low).norm() * (1.0 + 1e-9), "moved {worst} m, {percent} % of the diagonal");
 }
+
+#[test]
+fn an_asymptotic_design_that_misses_names_no_reshape() {
+    // `reshape` takes 0° < θ < 180°: for θ = 0 (the asymptotic family) the verdict must not name
+    // it, nor run a trial. The tolerance of 0.01° makes the strips miss.
+    use lamella::surfaces::{hyperbolic_paraboloid, HyperbolicParaboloid};
+    let dir = Scratch::new("reshape-asymptotic");
+    let surface = HyperbolicParaboloid { c: 5.0, half_width: 5.0, target_vertices: 600, irregularity: 0.4, seed: 5 };
+    let mesh = hyperbolic_paraboloid(&surface).expect("valid surface").into_mesh().expect("valid mesh");
+    mesh.write_obj(std::fs::File::create(dir.path("hypar.obj")).expect("create")).expect("write");
+    let output = lamella(&dir.0, &["design", "--mesh", "hypar.obj", "--theta", "0", "--tolerance", "0.01", "--strips", "6", "--out", "d", "--quiet"]);
+    let message = stderr(&output);
+    assert_eq!(output.status.code(), Some(3), "{message}");
+    assert!(message.contains("no acceptable family") && !message.contains("reshape"), "{message}");
+    assert!(read_json(&dir.path("d/report.json")).get("reshape_trial").is_none());
+}

@@ -57,12 +57,14 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     if verbosity == Verbosity::Verbose {
         warning_lines(&run).iter().for_each(err_line);
     }
-    // Only when the verdict fails: how far the surface would have to move (issue 19's trial).
-    let trial = if run.pattern.verdict.is_acceptable() {
+    // Only when the verdict fails, and for the angles `reshape` takes: how far the surface would
+    // have to move (paper Sec. 3.3).
+    let reshapable = theta > 0.0 && theta < 180.0;
+    let trial = if run.pattern.verdict.is_acceptable() || !reshapable {
         None
     } else {
         note(verbosity, "the strips miss θ: trying how far the surface would have to move (a short reshape)");
-        reshape_trial(&mesh, &solver.field(), theta, settings.strips, settings.tolerance).ok()
+        reshape_trial(&mesh, &solver.field(), theta, settings.strips, settings.width, settings.tolerance).ok()
     };
 
     let mut surface = Vec::new();
@@ -117,9 +119,10 @@ pub fn run(args: &DesignArgs) -> CliResult<()> {
     verdict(&run).map_err(|error| match error {
         CliError::NoAcceptableFamily(message) => CliError::NoAcceptableFamily(match &trial {
             Some(trial) => format!("{message}; {}", trial.advice(&session, theta)),
-            None => format!(
+            None if reshapable => format!(
                 "{message}; if no family of θ = {theta}° exists on this surface, move the surface a little: lamella reshape --session {session} --theta {theta} --tolerance 1%"
             ),
+            None => message,
         }),
         other => other,
     })

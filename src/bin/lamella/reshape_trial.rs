@@ -29,16 +29,17 @@ pub struct Trial {
     pub seconds: f64,
 }
 
-/// Runs the trial for the level sets of `field` on `mesh`, judged as `design` judged them.
-/// `Err` only when the trial cannot run at all (the reshape rejects the input).
-pub fn reshape_trial(mesh: &TriMesh, field: &[f64], theta: f64, strips: usize, angle_tolerance: f64) -> CliResult<Trial> {
+/// Runs the trial for the level sets of `field` on `mesh`, its strips built and judged as
+/// `design` built and judged its own (`strips` of `width`, `None` for the default, and
+/// `angle_tolerance`). `Err` only when the trial cannot run at all (the reshape rejects the input).
+pub fn reshape_trial(mesh: &TriMesh, field: &[f64], theta: f64, strips: usize, width: Option<f64>, angle_tolerance: f64) -> CliResult<Trial> {
     let started = std::time::Instant::now();
     let params = ReshapeParams { tolerance: Tolerance::DiagonalFraction(TRIAL_TOLERANCE_PERCENT / 100.0), ..ReshapeParams::new(theta) };
     let mut solver = ReshapeSolver::new(mesh, field, params).map_err(|e| CliError::internal(format!("reshape trial: {e}")))?;
     while solver.iterations() < TRIAL_ITERATIONS && !solver.is_converged() {
         solver.step(TRIAL_ITERATIONS - solver.iterations()).map_err(|e| CliError::internal(format!("reshape trial: {e}")))?;
     }
-    let run = build_strips(&solver.mesh(), field, theta, strips, None, angle_tolerance)?;
+    let run = build_strips(&solver.mesh(), field, theta, strips, width, angle_tolerance)?;
     let (low, high) = mesh.bounding_box();
     let deviation_percent = 100.0 * solver.report().max_deviation / (high - low).norm();
     Ok(Trial {
