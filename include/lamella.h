@@ -100,6 +100,28 @@
 // 17500 iterations. (A literal, equal to the library's limit.)
 #define LML_MAX_STRIP_ITERATIONS 500
 
+// `LmlVertexDiagnostics.defined` bit: `curvature` is defined.
+#define LML_DIAGNOSTIC_CURVATURE 1
+
+// `LmlVertexDiagnostics.defined` bit: `torsion` is defined.
+#define LML_DIAGNOSTIC_TORSION (1 << 1)
+
+// `LmlVertexDiagnostics.defined` bit: `conical_curvature` is defined (the vertex bends).
+#define LML_DIAGNOSTIC_CONICAL_CURVATURE (1 << 2)
+
+// `LmlVertexDiagnostics.defined` bit: `darboux_angle_degrees` is defined.
+#define LML_DIAGNOSTIC_DARBOUX_ANGLE (1 << 3)
+
+// `LmlVertexDiagnostics.defined` bit: `binormal_ruling_degrees` is defined.
+#define LML_DIAGNOSTIC_BINORMAL_RULING (1 << 4)
+
+// `LmlVertexDiagnostics.defined` bit: `binormal_offset` is defined.
+#define LML_DIAGNOSTIC_BINORMAL_OFFSET (1 << 5)
+
+// `LmlVertexDiagnostics.defined` bit: `singular_point_distance` is defined (else the singular
+// point is at infinity, or the vertex is straight).
+#define LML_DIAGNOSTIC_SINGULAR_POINT_DISTANCE (1 << 6)
+
 // Largest `LmlTraceOptions.max_points`. (A literal, so that the header can show it; equal to
 // the library's limit.)
 #define LML_MAX_TRACE_POINTS 10000000
@@ -490,6 +512,33 @@ typedef struct LmlSkippedCurve {
   // ZERO_LENGTH_SEGMENT, SOLVER_FAILED says why it was skipped.
   LmlStripWarnings warnings;
 } LmlSkippedCurve;
+
+// The Sec. 5.1 quantities at one centre-line vertex of a strip (see `lml_strips_diagnostics`).
+// A quantity whose bit is not set in `defined` is 0 (end vertices, straight stretches, a torsion
+// or k′ that cannot be differenced): no NaN is ever written. Lengths in the mesh's units.
+typedef struct LmlVertexDiagnostics {
+  // `LML_DIAGNOSTIC_*` bits of the quantities that are defined.
+  uint32_t defined;
+  // 1 when the singular point of the rectifying developable's ruling lies inside the strip or
+  // within one strip width of its boundary (Prop. 1), else 0.
+  uint32_t singular_point_near;
+  // Curvature κ ≥ 0 (of the circle through the vertex and its neighbours).
+  double curvature;
+  // Torsion τ (signed).
+  double torsion;
+  // Conical curvature k = τ/κ.
+  double conical_curvature;
+  // Angle atan |k| in degrees between the binormal and the Darboux vector (the ruling of the
+  // rectifying developable).
+  double darboux_angle_degrees;
+  // Angle in degrees between the strip's binormal and its ruling at the vertex.
+  double binormal_ruling_degrees;
+  // κ k² v² / 2 at v = half the strip width (Prop. 2): the distance of the binormal's point at
+  // the strip edge from the rectifying developable.
+  double binormal_offset;
+  // Distance along the ruling from the curve to the ruling's singular point.
+  double singular_point_distance;
+} LmlVertexDiagnostics;
 
 // Limits and tolerances of `lml_guides_trace`. Fill it with `lml_trace_options_default`, then
 // change fields as needed. Lengths are in the mesh's unit, angles in degrees.
@@ -1435,6 +1484,18 @@ LmlStatus lml_strips_skipped(const struct LmlStrips *strips,
                              struct LmlSkippedCurve *out,
                              size_t capacity,
                              size_t *needed);
+
+// Copies the Sec. 5.1 diagnostics of every centre-line point, laid out as `lml_strips_centres`
+// (one struct per point, strips one after another as `lml_strips_point_offsets` says): how far
+// each strip's binormals (the usual node axes) are from the rulings of its rectifying
+// developable, and where that developable's singular points lie.
+//
+// Two-call pattern as `lml_strips_point_offsets` (`capacity` and `*needed` count structs).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_strips_diagnostics(const struct LmlStrips *strips,
+                                 struct LmlVertexDiagnostics *out,
+                                 size_t capacity,
+                                 size_t *needed);
 
 // Writes the default tracing options to `*out`: no length limit, 100000 points, 2° tolerance,
 // turns up to 45°.

@@ -34,6 +34,7 @@ namespace Lamella.Tests
             { "LmlCrossing", typeof(Crossing) },
             { "LmlCandidate", typeof(CandidateRecord) },
             { "LmlVerdict", typeof(VerdictRecord) },
+            { "LmlVertexDiagnostics", typeof(VertexDiagnostics) },
             { "LmlMaterial", typeof(Material) },
             { "LmlStock", typeof(Stock) },
             { "LmlStripCheck", typeof(StripCheck) },
@@ -224,6 +225,7 @@ namespace Lamella.Tests
             AssertEnumMatches(typeof(StartKind), Header.ConstantsPascal("LML_START_"));
             AssertEnumMatches(typeof(FabricationText), Header.ConstantsPascal("LML_FABRICATION_TEXT_"));
             AssertEnumMatches(typeof(ShadingLabel), Header.ConstantsPascal("LML_SHADING_"));
+            AssertEnumMatches(typeof(DiagnosticParts), Header.ConstantsPascal("LML_DIAGNOSTIC_"));
             Assert.AreEqual(Header.FloatConstants()["LML_DEFAULT_CORNER_TURN_DEGREES"], BoundaryStarts.DefaultCornerTurnDegrees);
             Assert.AreEqual(Header.Constants()["LML_ABI_VERSION"], (long)Library.BindingAbiVersion);
         }

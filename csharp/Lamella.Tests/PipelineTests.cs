@@ -222,6 +222,34 @@ namespace Lamella.Tests
         }
 
         [Test]
+        public void DiagnosticsFollowPropositionTwoAtEveryCentrePoint()
+        {
+            VertexDiagnostics[] diagnostics = strips.Diagnostics();
+            Assert.AreEqual(strips.Centres().Length / 3, diagnostics.Length);
+            int bending = 0;
+            foreach (VertexDiagnostics d in diagnostics)
+            {
+                if (!d.Has(DiagnosticParts.ConicalCurvature))
+                {
+                    Assert.AreEqual(0.0, d.ConicalCurvature);
+                    Assert.AreEqual(0.0, d.BinormalOffset);
+                    continue;
+                }
+                bending++;
+                Assert.IsTrue(d.Has(DiagnosticParts.Curvature | DiagnosticParts.Torsion | DiagnosticParts.DarbouxAngle | DiagnosticParts.BinormalOffset));
+                Assert.AreEqual(d.Torsion / d.Curvature, d.ConicalCurvature, 1e-12 * (1 + Math.Abs(d.ConicalCurvature)));
+                Assert.AreEqual(Math.Atan(Math.Abs(d.ConicalCurvature)) * 180.0 / Math.PI, d.DarbouxAngleDegrees, 1e-9);
+                double k = d.ConicalCurvature, v = 0.5 * Width;
+                Assert.AreEqual(d.Curvature * k * k * v * v / 2.0, d.BinormalOffset, 1e-9 * (1 + d.BinormalOffset), "Prop. 2 at half the width");
+                // A θ-pseudo-geodesic's principal normal makes the angle 90° − θ with the surface normal, so
+                // κ = κ_n / sin θ, and on the cylinder |κ_n| ≤ 1/R; 10 % for the three-point circles of a centre
+                // line that leaves the surface a little (measured: 7 % at worst).
+                Assert.LessOrEqual(d.Curvature, 1.1 / (Cylinder.Radius * Math.Sin(Theta * Math.PI / 180.0)));
+            }
+            Assert.Greater(bending, diagnostics.Length / 2);
+        }
+
+        [Test]
         public void MetricsAgreeWithThePatternSummary()
         {
             StripMetrics[] metrics = strips.Metrics();

@@ -106,6 +106,13 @@ namespace Lamella
         public double[] UnrolledCentres() =>
             Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_unrolled_centres(Handle, b, c, out n));
 
+        /// <summary>
+        /// The Sec. 5.1 diagnostics of every centre point, laid out as <see cref="Centres"/> (one per point, strips one
+        /// after another): how far the binormals are from the rectifying developables' rulings, where their singular points lie.
+        /// </summary>
+        public VertexDiagnostics[] Diagnostics() =>
+            Native.Read((VertexDiagnostics[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_diagnostics(Handle, b, c, out n));
+
         /// <summary>The Table 4 measures of each strip.</summary>
         public StripMetrics[] Metrics() =>
             Native.Read((StripMetrics[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strips_metrics(Handle, b, c, out n));

@@ -110,7 +110,7 @@ pub unsafe extern "C" fn lml_strips_count(strips: *const LmlStrips, count: *mut 
 ///
 /// # Safety
 /// As [`handle`].
-unsafe fn strips_of<'a>(strips: *const LmlStrips) -> Result<&'a [RectifyingStrip], Failure> {
+pub(super) unsafe fn strips_of<'a>(strips: *const LmlStrips) -> Result<&'a [RectifyingStrip], Failure> {
     // SAFETY: forwarded contract.
     Ok(&unsafe { handle(strips, "strips") }?.pattern.strips)
 }

@@ -481,6 +481,49 @@ static void check_wrong_theta(const LmlCurves *curves)
     lml_strips_free(strips);
 }
 
+/* The Sec. 5.1 diagnostics: one per centre point; where the conical curvature is defined,
+ * atan |k| and Prop. 2's offset at half the width follow from it; undefined quantities are 0.
+ * Printed for the record: the curvature against 1 / (R sin theta), the bound of a theta-pseudo-
+ * geodesic of the cylinder (this coarse harness cylinder's strips exceed it by about 20 %; the C#
+ * pipeline test holds the finer cylinder to 10 %). */
+static void check_diagnostics(const LmlStrips *strips)
+{
+    size_t points = 0, count = 0, i, bending = 0;
+    LmlVertexDiagnostics *d;
+    const double pi = 3.14159265358979323846, half = 0.5 * WIDTH;
+    double worst = 0.0;
+    const unsigned needed_bits = LML_DIAGNOSTIC_CURVATURE | LML_DIAGNOSTIC_DARBOUX_ANGLE | LML_DIAGNOSTIC_BINORMAL_OFFSET;
+
+    CHECK_STATUS(lml_strips_centres(strips, NULL, 0, &points), LML_STATUS_BUFFER_TOO_SMALL);
+    CHECK_STATUS(lml_strips_diagnostics(strips, NULL, 0, &count), LML_STATUS_BUFFER_TOO_SMALL);
+    CHECK(3 * count == points && count > 0);
+    CHECK_STATUS(lml_strips_diagnostics(NULL, NULL, 0, &count), LML_STATUS_INVALID_ARGUMENT);
+    d = malloc(count * sizeof *d);
+    if (d == NULL) {
+        CHECK(!"out of memory");
+        return;
+    }
+    CHECK_STATUS(lml_strips_diagnostics(strips, d, count - 1, &points), LML_STATUS_BUFFER_TOO_SMALL);
+    CHECK_STATUS(lml_strips_diagnostics(strips, d, count, &points), LML_STATUS_OK);
+    for (i = 0; i < count; i++) {
+        CHECK(d[i].singular_point_near <= 1);
+        if (!(d[i].defined & LML_DIAGNOSTIC_CONICAL_CURVATURE)) {
+            CHECK(d[i].conical_curvature == 0.0 && d[i].darboux_angle_degrees == 0.0 && d[i].binormal_offset == 0.0);
+            continue;
+        }
+        bending++;
+        CHECK((d[i].defined & needed_bits) == needed_bits);
+        CHECK(fabs(d[i].darboux_angle_degrees - atan(fabs(d[i].conical_curvature)) * 180.0 / pi) < 1e-9);
+        CHECK(fabs(d[i].binormal_offset - d[i].curvature * d[i].conical_curvature * d[i].conical_curvature * half * half / 2.0) <=
+              1e-9 * (1.0 + d[i].binormal_offset));
+        worst = fmax(worst, d[i].curvature * CYLINDER_RADIUS * sin(THETA * pi / 180.0));
+    }
+    printf("  Sec. 5.1 diagnostics: %lu of %lu centre points bend; curvature up to %.3f x 1 / (R sin theta)\n", (unsigned long)bending,
+           (unsigned long)count, worst);
+    CHECK(2 * bending > count);
+    free(d);
+}
+
 void test_strips(const LmlField *field, LmlCurves *curves)
 {
     LmlStripParams params;
@@ -508,6 +551,7 @@ void test_strips(const LmlField *field, LmlCurves *curves)
     if (s > 0) {
         check_metrics(strips, s, curve_count);
         check_geometry(strips, s);
+        check_diagnostics(strips);
     }
     lml_strips_free(strips);
     check_skipped(field, &params);

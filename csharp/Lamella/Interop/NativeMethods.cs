@@ -200,6 +200,8 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_strips_metrics(StripsHandle strips, [Out] StripMetrics[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strips_diagnostics(StripsHandle strips, [Out] VertexDiagnostics[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_strips_pattern_metrics(StripsHandle strips, out PatternMetrics metrics);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_strips_skipped(StripsHandle strips, [Out] SkippedCurve[] buffer, UIntPtr capacity, out UIntPtr needed);
