@@ -48,9 +48,21 @@ namespace Lamella.Grasshopper
             pManager.AddMeshParameter("Net", "N", "The quad net: a vertex where a level curve of each family crosses, a quad where four crossings exist.", GH_ParamAccess.item);
             pManager.AddPointParameter("Nodes", "P", "Where a strip of the first family crosses one of the second.", GH_ParamAccess.list);
             pManager.AddVectorParameter("Node Axes", "X", "Per node, the unit node axis (the mean of the two strips' rulings there).", GH_ParamAccess.list);
-            pManager.AddTextParameter("Node Data", "D", "Per node: the strips (S<i> of the first family, T<j> of the second), the arc length of the node along each (where its hole goes on the flat strip) and the angle between the two rulings (0° for a torsion-free node).", GH_ParamAccess.list);
+            pManager.AddTextParameter("Node Data", "D", "Per node: the strips (S<i> of the first family, T<j> of the second), the arc length of the node along each (where its hole goes on the flat strip), the angle between the two rulings (0° for a torsion-free node) and, per strip, the angle atan |k| between its binormal and the ruling of its rectifying developable (Sec. 5.1), flagged where the ruling's singular point is near the strip.", GH_ParamAccess.list);
             pManager.AddBooleanParameter("Acceptable", "A", "Per family, true when its strips meet θ within the library's tolerance without flipped quads.", GH_ParamAccess.list);
             pManager.AddTextParameter("Report", "R", "Iterations, each family's angle error, the crossing angles and each family's verdict.", GH_ParamAccess.item);
+        }
+
+        /// <summary>
+        /// Strip <paramref name="k"/>'s angle atan |k| at the node, "straight" where it has none, and a warning when the
+        /// singular point of its ruling is near the strip.
+        /// </summary>
+        private static string DiagnosticText(Node node, int k)
+        {
+            string angle = node.DarbouxAngleDegrees[k].HasValue
+                ? string.Format(CultureInfo.InvariantCulture, "{0:0.#}°", node.DarbouxAngleDegrees[k].Value)
+                : "straight";
+            return node.SingularPointNear[k] ? angle + " (singular point near)" : angle;
         }
 
         protected override void Solve(IGH_DataAccess DA)
@@ -126,8 +138,9 @@ namespace Lamella.Grasshopper
                 Node node = nodes[i];
                 Array.Copy(node.Position, 0, positions, 3 * i, 3);
                 axes.Add(new Vector3d(node.Axis[0], node.Axis[1], node.Axis[2]));
-                data.Add(string.Format(CultureInfo.InvariantCulture, "S{0} at {1:0.###}, T{2} at {3:0.###}; rulings {4:0.#}° apart",
-                    node.Strips[0], node.ArcLengths[0], node.Strips[1], node.ArcLengths[1], node.RulingAngleDegrees));
+                data.Add(string.Format(CultureInfo.InvariantCulture, "S{0} at {1:0.###}, T{2} at {3:0.###}; rulings {4:0.#}° apart; binormal to developable ruling (Sec. 5.1): S {5}, T {6}",
+                    node.Strips[0], node.ArcLengths[0], node.Strips[1], node.ArcLengths[1], node.RulingAngleDegrees,
+                    DiagnosticText(node, 0), DiagnosticText(node, 1)));
             }
             Message = string.Format(CultureInfo.InvariantCulture, "{0} nodes · crossing ≥ {1:0.#}°", nodes.Length, report.MinIntersectionDegrees);
             DA.SetDataTree(0, curves);
