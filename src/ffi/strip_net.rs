@@ -59,7 +59,8 @@ impl From<&Node> for LmlNode {
             position: [n.position.x, n.position.y, n.position.z],
             axis: [n.axis.x, n.axis.y, n.axis.z],
             ruling_angle_degrees: n.ruling_angle_degrees,
-            diagnostics_defined: n.diagnostics.map(|d| u32::from(d.conical_curvature.is_some() && d.darboux_angle_degrees.is_some() && d.binormal_offset.is_some())),
+            // atan |k| and the offset are defined exactly where k is.
+            diagnostics_defined: n.diagnostics.map(|d| u32::from(d.conical_curvature.is_some())),
             singular_point_near: n.diagnostics.map(|d| u32::from(d.singular_point_near)),
             conical_curvature: n.diagnostics.map(|d| d.conical_curvature.unwrap_or(0.0)),
             darboux_angle_degrees: n.diagnostics.map(|d| d.darboux_angle_degrees.unwrap_or(0.0)),

@@ -85,8 +85,7 @@ impl NetSolver {
         check_damping(session.damping)?;
         let mesh = TriMesh::from_vertices_and_faces(session.mesh.positions().to_vec(), session.mesh.faces().to_vec())
             .map_err(|e| corrupt(format!("the saved mesh is not valid: {e}")))?;
-        let (unit_mesh, _) = mesh.unit_scaled();
-        let mut solver = NetSolver::assemble(mesh, unit_mesh, params, session.target, session.field_scales, session.stage)?;
+        let mut solver = NetSolver::assemble(mesh, params, session.target, session.field_scales, session.stage)?;
         if session.x.len() != solver.x.len() {
             return Err(corrupt(format!("{} saved variables, the mesh needs {}", session.x.len(), solver.x.len())));
         }

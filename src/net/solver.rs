@@ -57,7 +57,7 @@ impl NetSolver {
             field_scales.push(1.0 / gradient);
         }
         let target = oriented_target(&unit_mesh, fields, &params);
-        let mut solver = NetSolver::assemble(given, unit_mesh, params, target, field_scales, 0)?;
+        let mut solver = NetSolver::assemble(given, params, target, field_scales, 0)?;
         for (k, (field, scale)) in fields.iter().zip(&solver.field_scales).enumerate() {
             let start = solver.problem.field_start(k);
             solver.x[start..start + field.len()].iter_mut().zip(field).for_each(|(x, f)| *x = f * scale);
@@ -69,16 +69,16 @@ impl NetSolver {
         Ok(solver)
     }
 
-    /// A solver in weight stage `stage` with every variable zero, on an already unit-scaled mesh,
-    /// for the oriented target `(cos γ, sin γ)` of the intersection term.
+    /// A solver on `given` (scaled to mean edge 1 inside) in weight stage `stage` with every
+    /// variable zero, for the oriented target `(cos γ, sin γ)` of the intersection term.
     pub(super) fn assemble(
         given: TriMesh,
-        unit_mesh: TriMesh,
         params: NetParams,
         target: (f64, f64),
         field_scales: Vec<f64>,
         stage: usize,
     ) -> Result<NetSolver, FieldError> {
+        let (unit_mesh, _) = given.unit_scaled();
         let (stage, weights) = stage_weights(&params.field, stage);
         let problem = NetProblem::new(&unit_mesh, &params.families, weights, intersection_term(&params, target));
         let lm = LevenbergMarquardt::new(&problem, params.field.lm.clone())?;

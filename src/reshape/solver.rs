@@ -53,8 +53,7 @@ impl ReshapeSolver {
     /// [`Self::new`] starting from `moved`, an earlier result on `original` (same faces): the
     /// deviation, `v_ori` of Eq. 14 and `l*` of Eq. 15 still refer to `original`. What the
     /// alternating schedule ([`super::alternate`]) needs after each field step.
-    pub fn resume(original_mesh: &TriMesh, moved: &TriMesh, field: &[f64], params: ReshapeParams) -> Result<ReshapeSolver, ReshapeError> {
-        let original = original_mesh;
+    pub fn resume(original: &TriMesh, moved: &TriMesh, field: &[f64], params: ReshapeParams) -> Result<ReshapeSolver, ReshapeError> {
         validate_params(&params)?;
         validate_field(original, field)?;
         if moved.faces() != original.faces() || moved.vertex_count() != original.vertex_count() {
@@ -68,6 +67,7 @@ impl ReshapeSolver {
             return Err(ReshapeError::NoCurveVertices);
         }
         let start = moved.try_scaled(length_scale)?;
+        let given = original.clone();
         let original = Original::new(unit_mesh.clone());
         let lin = Linearisation::new(start.clone(), &curves, &original);
         let problem = SurfaceProblem::new(&unit_mesh, curves, lin, params.weights, params.theta_degrees);
@@ -80,7 +80,7 @@ impl ReshapeSolver {
             previous: x.clone(),
             problem,
             original,
-            given: original_mesh.clone(),
+            given,
             lm,
             params,
             x,
