@@ -5,11 +5,13 @@
 //! the sparse Levenberg–Marquardt [`solver`] from an [`initialisation`] (guide curves or
 //! sketched strokes, and the automatic design);
 //! its level [`curves`]; the rectifying developable [`strips`] along them with their flat
-//! unrollings; gridshells from [`net`]s of two families (Sec. 4.1); what a workshop needs to
+//! unrollings; gridshells from [`net`]s of two families (Sec. 4.1) and the optimisation of their
+//! [`base_mesh`] toward exact families and torsion-free nodes (Sec. 3.5, 5.2); what a workshop needs to
 //! make them in [`fabrication`]; the outside reviewer's measures of the results in [`quality`];
 //! a self-contained interactive 3D [`view`] of a design (one HTML file); the C ABI in
 //! [`ffi`]; procedural [`surfaces`] for tests and the demo; [`input`]: the size limit of input
 //! files and the bounds on text quoted in error messages.
+pub mod base_mesh;
 pub mod curves;
 pub mod fabrication;
 pub mod ffi;

@@ -83,15 +83,27 @@ impl FamilyAngles {
 /// points whose osculating circle is larger than `model_size` count as straight.
 /// Errors: `spacing` not finite and positive, or a curve without a normal per point.
 pub fn family_angles(curves: &[LevelCurve], family: Family, spacing: f64, model_size: f64) -> Result<FamilyAngles, CurveError> {
+    let resampled: Vec<LevelCurve> = curves.iter().map(|curve| curve.resampled(spacing)).collect::<Result<_, _>>()?;
+    let mut angles = polyline_family_angles(&resampled, family, model_size);
+    angles.spacing = spacing;
+    for (measure, curve) in angles.curves.iter_mut().zip(curves) {
+        measure.length = curve.length();
+    }
+    Ok(angles)
+}
+
+/// As [`family_angles`], at the curves' own vertices (no resampling; `spacing` is left 0): for
+/// polylines whose vertices are the points that matter, such as the rows and columns of a base
+/// mesh (Sec. 3.5). Curves need a normal per point.
+pub fn polyline_family_angles(curves: &[LevelCurve], family: Family, model_size: f64) -> FamilyAngles {
     let theta = family.theta_degrees();
     let straight_is_exact = !matches!(family, Family::PseudoGeodesic { .. });
-    let mut family_angles = FamilyAngles { spacing, ..FamilyAngles::default() };
+    let mut family_angles = FamilyAngles::default();
     let mut sum_squares = 0.0;
     for (index, curve) in curves.iter().enumerate() {
-        let resampled = curve.resampled(spacing)?;
         let mut angles = CurveAngles { length: curve.length(), ..CurveAngles::default() };
         let mut curve_squares = 0.0;
-        for (point, measured) in inner_angles(&resampled, model_size) {
+        for (point, measured) in inner_angles(curve, model_size) {
             let error = match measured {
                 Some(measured) => Some((family.angle_error_degrees(measured, theta), measured)),
                 None if straight_is_exact => Some((0.0, theta)),
@@ -120,7 +132,7 @@ pub fn family_angles(curves: &[LevelCurve], family: Family, spacing: f64, model_
     if family_angles.measured > 0 {
         family_angles.rms_error_degrees = (sum_squares / family_angles.measured as f64).sqrt();
     }
-    Ok(family_angles)
+    family_angles
 }
 
 /// Each inner point of a resampled curve with its signed angle, `None` where the curve is

@@ -5,5 +5,5 @@
 mod family;
 mod slope;
 
-pub use family::{family_angles, CurveAngles, FamilyAngles, WorstPoint, DEFAULT_SPACING_EDGES};
+pub use family::{family_angles, polyline_family_angles, CurveAngles, FamilyAngles, WorstPoint, DEFAULT_SPACING_EDGES};
 pub use slope::{slope_angles, SlopeAngles};

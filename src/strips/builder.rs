@@ -276,9 +276,8 @@ impl<'a> StripOptimiser<'a> {
         self.problem.frozen.rulings = rulings;
     }
 
-    fn finish(self, curve: usize, level: f64, params: &StripParams, diagonal: f64, mut warnings: Vec<StripWarning>) -> RectifyingStrip {
+    fn finish(self, curve: usize, level: f64, params: &StripParams, diagonal: f64, warnings: Vec<StripWarning>) -> RectifyingStrip {
         let centre = self.positions();
-        let edges = unit_edges(&centre);
         let binormals: Vec<Vec3> = (0..self.n).map(|i| vec3(&self.x, binormal(i)).try_normalize(0.0).unwrap_or_else(Vec3::zeros)).collect();
         let rulings: Vec<Vec3> = (0..self.n)
             .map(|i| {
@@ -286,53 +285,82 @@ impl<'a> StripOptimiser<'a> {
                 if d.dot(&binormals[i]) < 0.0 { -d } else { d }
             })
             .collect();
-        // Ruling offsets of unit distance from the centre line in the flat strip: d / sin α.
-        let unit_offsets: Vec<Vec3> = (0..self.n)
-            .map(|i| {
-                let around = [i.checked_sub(1), (i < self.n - 1).then_some(i)];
-                let sines: Vec<f64> = around.iter().flatten().map(|&j| rulings[i].cross(&edges[j]).norm()).collect();
-                let sine = sines.iter().sum::<f64>() / sines.len() as f64;
-                rulings[i] / sine.max(MIN_SINE)
-            })
-            .collect();
-        let half = 0.5 * params.width;
-        let max_width = (0..self.n - 1)
-            .map(|j| {
-                let spread = (unit_offsets[j + 1] - unit_offsets[j]).dot(&edges[j]).abs();
-                let length = (centre[j + 1] - centre[j]).norm();
-                if spread > 0.0 { 2.0 * length / spread } else { f64::INFINITY }
-            })
-            .fold(f64::INFINITY, f64::min);
-        if params.width >= max_width {
-            warnings.push(StripWarning::WidthTooLarge { width: params.width, max_width });
-        }
-        let offsets: Vec<Vec3> = unit_offsets.iter().map(|o| o * half).collect();
-        let unrolling = unroll(&centre, &offsets);
-        // A vertex that cannot be projected (never expected: LM keeps x finite) gets an infinite
-        // distance, which `is_finite` turns into a skip rather than a wrong metric.
-        let shape = StripShape { centre: &centre, rulings: &rulings, offsets: &offsets, unrolling: &unrolling, width: params.width };
-        let metrics = StripMetrics::on_surface(self.projector, &shape, params.theta_degrees, diagonal);
-        if metrics.flipped_quads > 0 {
-            warnings.push(StripWarning::FlippedQuads { count: metrics.flipped_quads });
-        }
-        RectifyingStrip {
-            curve,
-            level,
-            left: centre.iter().zip(&offsets).map(|(c, o)| c + o).collect(),
-            right: centre.iter().zip(&offsets).map(|(c, o)| c - o).collect(),
-            centre,
-            binormals,
-            rulings,
-            unrolling,
-            metrics,
-            warnings,
-        }
+        let lines = StripLines { curve, level, centre, binormals, rulings };
+        strip_with_rulings(self.projector, lines, params.width, params.theta_degrees, diagonal, warnings)
+    }
+}
+
+/// A strip's centre line with a binormal and a unit ruling per vertex, before it is given a width.
+pub(crate) struct StripLines {
+    /// Index of the curve it is built on, and that curve's level value.
+    pub curve: usize,
+    pub level: f64,
+    pub centre: Vec<Vec3>,
+    pub binormals: Vec<Vec3>,
+    pub rulings: Vec<Vec3>,
+}
+
+/// The strip of `width` on `lines` (Fig. 20): boundaries `c_i ± s_i d_i` with
+/// `s_i = width / (2 sin α_i)`, its flat unrolling and its Table 4 metrics against the surface of
+/// `projector` for the family of `theta_degrees`. Warns of a width the quads cannot carry and of
+/// flipped quads.
+pub(crate) fn strip_with_rulings(
+    projector: &SurfaceProjector,
+    lines: StripLines,
+    width: f64,
+    theta_degrees: f64,
+    diagonal: f64,
+    mut warnings: Vec<StripWarning>,
+) -> RectifyingStrip {
+    let StripLines { curve, level, centre, binormals, rulings } = lines;
+    let n = centre.len();
+    let edges = unit_edges(&centre);
+    // Ruling offsets of unit distance from the centre line in the flat strip: d / sin α.
+    let unit_offsets: Vec<Vec3> = (0..n)
+        .map(|i| {
+            let around = [i.checked_sub(1), (i < n - 1).then_some(i)];
+            let sines: Vec<f64> = around.iter().flatten().map(|&j| rulings[i].cross(&edges[j]).norm()).collect();
+            let sine = sines.iter().sum::<f64>() / sines.len() as f64;
+            rulings[i] / sine.max(MIN_SINE)
+        })
+        .collect();
+    let half = 0.5 * width;
+    let max_width = (0..n - 1)
+        .map(|j| {
+            let spread = (unit_offsets[j + 1] - unit_offsets[j]).dot(&edges[j]).abs();
+            let length = (centre[j + 1] - centre[j]).norm();
+            if spread > 0.0 { 2.0 * length / spread } else { f64::INFINITY }
+        })
+        .fold(f64::INFINITY, f64::min);
+    if width >= max_width {
+        warnings.push(StripWarning::WidthTooLarge { width, max_width });
+    }
+    let offsets: Vec<Vec3> = unit_offsets.iter().map(|o| o * half).collect();
+    let unrolling = unroll(&centre, &offsets);
+    // A vertex that cannot be projected (never expected: LM keeps x finite) gets an infinite
+    // distance, which `is_finite` turns into a skip rather than a wrong metric.
+    let shape = StripShape { centre: &centre, rulings: &rulings, offsets: &offsets, unrolling: &unrolling, width };
+    let metrics = StripMetrics::on_surface(projector, &shape, theta_degrees, diagonal);
+    if metrics.flipped_quads > 0 {
+        warnings.push(StripWarning::FlippedQuads { count: metrics.flipped_quads });
+    }
+    RectifyingStrip {
+        curve,
+        level,
+        left: centre.iter().zip(&offsets).map(|(c, o)| c + o).collect(),
+        right: centre.iter().zip(&offsets).map(|(c, o)| c - o).collect(),
+        centre,
+        binormals,
+        rulings,
+        unrolling,
+        metrics,
+        warnings,
     }
 }
 
 impl RectifyingStrip {
     /// Whether every output number is finite (the builder never returns a strip that is not).
-    fn is_finite(&self) -> bool {
+    pub(crate) fn is_finite(&self) -> bool {
         let vectors = [&self.centre, &self.binormals, &self.rulings, &self.left, &self.right];
         let planar = [&self.unrolling.centre, &self.unrolling.left, &self.unrolling.right];
         let m = &self.metrics;

@@ -26,14 +26,19 @@ impl<'a> SurfaceProjector<'a> {
     /// The closest point of the mesh to `query` (ties: the lowest face index). `None` only for a
     /// non-finite query.
     pub fn project(&self, query: &Vec3) -> Option<SurfacePoint> {
-        let closest = self.bvh.closest(self.mesh, query)?;
-        let (distance, f, w) = (closest.distance, closest.face, closest.weights);
-        let face = self.mesh.faces()[f];
-        let normals = face.map(|v| self.mesh.smooth_normals()[v as usize]);
-        let corners = face.map(|v| self.mesh.positions()[v as usize]);
-        let normal = (normals[0] * w[0] + normals[1] * w[1] + normals[2] * w[2])
-            .try_normalize(0.0)
-            .unwrap_or(self.mesh.face_normals()[f]);
-        Some(SurfacePoint { point: corners[0] * w[0] + corners[1] * w[1] + corners[2] * w[2], normal, distance })
+        project_on(self.mesh, &self.bvh, query)
     }
+}
+
+/// The closest point of `mesh` to `query` through `bvh` (built on `mesh`), as
+/// [`SurfaceProjector::project`]: for holders of a mesh and its hierarchy that outlive one query
+/// pass.
+pub fn project_on(mesh: &TriMesh, bvh: &FaceBvh, query: &Vec3) -> Option<SurfacePoint> {
+    let closest = bvh.closest(mesh, query)?;
+    let (distance, f, w) = (closest.distance, closest.face, closest.weights);
+    let face = mesh.faces()[f];
+    let normals = face.map(|v| mesh.smooth_normals()[v as usize]);
+    let corners = face.map(|v| mesh.positions()[v as usize]);
+    let normal = (normals[0] * w[0] + normals[1] * w[1] + normals[2] * w[2]).try_normalize(0.0).unwrap_or(mesh.face_normals()[f]);
+    Some(SurfacePoint { point: corners[0] * w[0] + corners[1] * w[1] + corners[2] * w[2], normal, distance })
 }

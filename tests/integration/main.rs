@@ -87,3 +87,4 @@ mod tracing_intersections;
 mod tracing_seeding;
 
 mod view_page;
+mod base_mesh_optimisation;

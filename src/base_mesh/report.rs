@@ -1,0 +1,134 @@
+//! What a base-mesh optimisation reports, measured as an outside reviewer would: each family's
+//! angle at the net's own vertices against the reference surface's smooth normal
+//! ([`crate::quality::polyline_family_angles`]), the distance of the net from the reference, and
+//! the torsion at the nodes ([`super::node_torsion`]).
+
+use super::net_mesh::NetMesh;
+use super::node_torsion::{node_rulings, polyline_rulings, NodeRuling, NodeTorsion, PolylineRulings, TORSION_FREE_DEGREES};
+use crate::curves::LevelCurve;
+use crate::field::Family;
+use crate::mesh::{FaceBvh, TriMesh, Vec3};
+use crate::quality::{polyline_family_angles, FamilyAngles};
+use crate::strips::project_on;
+use serde::{Deserialize, Serialize};
+
+/// Distance of the net's vertices from the reference surface.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Deviation {
+    pub max: f64,
+    pub rms: f64,
+    /// `max` in % of the reference's bounding-box diagonal.
+    pub max_percent: f64,
+    /// The vertex farthest from the reference.
+    pub worst_vertex: usize,
+}
+
+/// The state of a base-mesh optimisation.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct BaseMeshReport {
+    /// Iterations run so far, in all.
+    pub iterations: usize,
+    /// Iterations the last step ran.
+    pub step_iterations: usize,
+    pub converged: bool,
+    /// The weighted energy (sum of squared residuals) at the current net.
+    pub energy: f64,
+    /// Each family's target angle along its polylines' direction (a pseudo-geodesic family whose
+    /// polylines run the other way is held at `180° − θ`, the same curves).
+    pub targets_degrees: [f64; 2],
+    /// Each family measured at its polylines' inner vertices.
+    pub families: [FamilyAngles; 2],
+    pub deviation: Deviation,
+    pub node_torsion: NodeTorsion,
+    /// Every measured vertex of both families is within the tolerance of its angle, and a
+    /// pseudo-geodesic family is not straight at any of them.
+    pub families_met: bool,
+    /// Every measured node is within [`TORSION_FREE_DEGREES`].
+    pub torsion_free: bool,
+}
+
+/// The measures of a net (caller units) against its reference.
+pub(crate) struct Measures {
+    pub families: [FamilyAngles; 2],
+    pub deviation: Deviation,
+    pub rulings: PolylineRulings,
+    pub nodes: Vec<NodeRuling>,
+    pub node_torsion: NodeTorsion,
+}
+
+/// The reference surface with its closest-point hierarchy.
+pub(crate) struct Reference {
+    pub mesh: TriMesh,
+    pub bvh: FaceBvh,
+    pub diagonal: f64,
+}
+
+impl Reference {
+    pub fn new(mesh: &TriMesh) -> Reference {
+        let (low, high) = mesh.bounding_box();
+        Reference { bvh: FaceBvh::new(mesh), mesh: mesh.clone(), diagonal: (high - low).norm().max(f64::MIN_POSITIVE) }
+    }
+
+    /// The closest point of `p` on the reference and the smooth normal there (`p` and the
+    /// z axis for a non-finite query, which a valid net never holds).
+    pub fn closest(&self, p: &Vec3) -> (Vec3, Vec3, f64) {
+        project_on(&self.mesh, &self.bvh, p).map_or((*p, Vec3::z(), f64::INFINITY), |s| (s.point, s.normal, s.distance))
+    }
+
+    /// Each polyline of family `k` as a curve with the reference's normals.
+    pub fn curves(&self, net: &NetMesh, k: usize) -> Vec<LevelCurve> {
+        net.polylines(k)
+            .iter()
+            .enumerate()
+            .map(|(index, line)| {
+                let points: Vec<Vec3> = line.iter().map(|&v| net.positions()[v as usize]).collect();
+                let normals = points.iter().map(|p| self.closest(p).1).collect();
+                LevelCurve { level: index as f64, points, normals, closed: false, singular_vertices: Vec::new() }
+            })
+            .collect()
+    }
+
+    /// Measures `net` for the families `families` at the targets `targets_degrees`.
+    pub fn measure(&self, net: &NetMesh, families: [Family; 2], targets_degrees: [f64; 2]) -> Measures {
+        let family_angles = [0, 1].map(|k| polyline_family_angles(&self.curves(net, k), target_family(families[k], targets_degrees[k]), self.diagonal));
+        let mut deviation = Deviation::default();
+        let mut squares = 0.0;
+        for (v, p) in net.positions().iter().enumerate() {
+            let distance = self.closest(p).2;
+            squares += distance * distance;
+            if distance > deviation.max || v == 0 {
+                deviation.max = distance;
+                deviation.worst_vertex = v;
+            }
+        }
+        deviation.rms = (squares / net.vertex_count() as f64).sqrt();
+        deviation.max_percent = 100.0 * deviation.max / self.diagonal;
+        let rulings = polyline_rulings(net);
+        let (nodes, node_torsion) = node_rulings(net, &rulings);
+        Measures { families: family_angles, deviation, rulings, nodes, node_torsion }
+    }
+}
+
+/// `family` with its angle read along the polylines' direction.
+pub(crate) fn target_family(family: Family, target_degrees: f64) -> Family {
+    match family {
+        Family::PseudoGeodesic { .. } => Family::PseudoGeodesic { theta_degrees: target_degrees },
+        other => other,
+    }
+}
+
+impl BaseMeshReport {
+    /// The report of `measures` with the solver's counters, judged at `tolerance_degrees`.
+    pub(crate) fn new(measures: &Measures, targets_degrees: [f64; 2], tolerance_degrees: f64) -> BaseMeshReport {
+        let families_met = measures.families.iter().all(|f| f.max_error_degrees <= tolerance_degrees && f.straight == 0);
+        BaseMeshReport {
+            targets_degrees,
+            families: measures.families.clone(),
+            deviation: measures.deviation,
+            node_torsion: measures.node_torsion.clone(),
+            families_met,
+            torsion_free: measures.node_torsion.max_degrees <= TORSION_FREE_DEGREES,
+            ..BaseMeshReport::default()
+        }
+    }
+}

@@ -1,0 +1,240 @@
+//! The stepwise base-mesh optimiser (Sec. 3.5, and Eq. 21 for torsion-free nodes), stepped like
+//! [`crate::field::FieldSolver`]: create, step, inspect, take the net and its strips.
+
+use super::error::BaseMeshError;
+use super::net_mesh::NetMesh;
+use super::node_torsion::NodeRuling;
+use super::params::BaseMeshParams;
+use super::problem::{vec3, Anchor, BaseMeshProblem, CurveRows};
+use super::report::{target_family, BaseMeshReport, Measures, Reference};
+use super::start::{initialise_auxiliaries, oriented_target};
+use super::strips::net_strips;
+use crate::field::Family;
+use crate::mesh::{TriMesh, Vec3};
+use crate::quality::polyline_family_angles;
+use crate::solver::{LeastSquaresProblem, LevenbergMarquardt};
+use crate::strips::StripPattern;
+use rayon::prelude::*;
+
+/// Optimises a net's vertices so that its rows and columns form the asked families on (near) a
+/// reference surface, optionally with torsion-free nodes: then in two stages, the families alone
+/// until they settle, then with the rows of Eq. 21 (the rulings started from the net's strips,
+/// [`super::node_torsion`]).
+///
+/// Works on a copy of the net scaled to mean segment length 1 (the weights are meant for that
+/// scale); everything handed back is in the caller's units.
+pub struct BaseMeshSolver {
+    reference: Reference,
+    /// Internal lengths = caller lengths × `scale`.
+    scale: f64,
+    problem: BaseMeshProblem,
+    lm: LevenbergMarquardt,
+    params: BaseMeshParams,
+    x: Vec<f64>,
+    targets_degrees: [f64; 2],
+    iterations: usize,
+    converged: bool,
+    initial: BaseMeshReport,
+    last_report: BaseMeshReport,
+    measures: Measures,
+}
+
+impl BaseMeshSolver {
+    /// Prepares the optimisation of `net` toward `params.families` (rows, columns) near
+    /// `reference`. Each pseudo-geodesic family is held at `θ` or `180° − θ`, whichever its
+    /// polylines are nearer to as given (see [`BaseMeshReport::targets_degrees`]).
+    ///
+    /// Errors: `InvalidParameter` naming the parameter; `NothingToOptimise` when no vertex is
+    /// inside a polyline of three or more vertices; `Solver` if the problem cannot be set up.
+    pub fn new(net: &NetMesh, reference: &TriMesh, mut params: BaseMeshParams) -> Result<BaseMeshSolver, BaseMeshError> {
+        params.validate()?;
+        params.families = params.families.map(Family::by_name);
+        if !(0..net.vertex_count()).any(|v| net.along(v, 0).inner().is_some() || net.along(v, 1).inner().is_some()) {
+            return Err(BaseMeshError::NothingToOptimise);
+        }
+        let reference = Reference::new(reference);
+        let segments: Vec<f64> = (0..2).flat_map(|k| net.segments(k).map(|[a, b]| (net.positions()[b as usize] - net.positions()[a as usize]).norm()).collect::<Vec<_>>()).collect();
+        let mean = segments.iter().sum::<f64>() / segments.len().max(1) as f64;
+        let scale = if mean > 0.0 && mean.is_finite() { 1.0 / mean } else { 1.0 };
+        let targets_degrees = [0, 1].map(|k| {
+            let family = params.families[k];
+            let curves = reference.curves(net, k);
+            let mirror = target_family(family, 180.0 - family.theta_degrees());
+            oriented_target(family, &polyline_family_angles(&curves, family, reference.diagonal), &polyline_family_angles(&curves, mirror, reference.diagonal))
+        });
+        let scaled = net.with_positions(net.positions().iter().map(|p| p * scale).collect());
+        let measures = reference.measure(net, params.families, targets_degrees);
+        let (problem, lm, x) = stage(&reference, scaled, scale, &params, targets_degrees, false, &measures)?;
+        let mut report = BaseMeshReport::new(&measures, targets_degrees, params.tolerance_degrees);
+        report.energy = energy(&problem, &x);
+        Ok(BaseMeshSolver {
+            reference,
+            scale,
+            problem,
+            lm,
+            params,
+            x,
+            targets_degrees,
+            iterations: 0,
+            converged: false,
+            initial: report.clone(),
+            last_report: report,
+            measures,
+        })
+    }
+
+    /// Runs at most `max_iterations` Levenberg–Marquardt iterations (the reference's closest
+    /// points re-found before each) and reports the state.
+    pub fn step(&mut self, max_iterations: usize) -> Result<BaseMeshReport, BaseMeshError> {
+        rayon::scope(|_| self.run(max_iterations))
+    }
+
+    fn run(&mut self, max_iterations: usize) -> Result<BaseMeshReport, BaseMeshError> {
+        let mut ran = 0;
+        let mut energy = self.last_report.energy;
+        while ran < max_iterations && !self.converged {
+            let scaled = self.scaled_net();
+            self.problem.anchors = anchors(&self.reference, &scaled, self.scale);
+            let outcome = self.lm.iterate(&self.problem, &mut self.x)?;
+            ran += 1;
+            self.iterations += 1;
+            energy = outcome.energy_after;
+            let decrease = outcome.energy_before - outcome.energy_after;
+            let settled = outcome.converged.is_some() || !outcome.accepted || decrease <= self.params.relative_tolerance * outcome.energy_before;
+            if settled && self.params.torsion_free && !self.problem.torsion_free {
+                // The families are met: now the nodes, from the strips of the net as it stands.
+                self.measures = self.reference.measure(&self.net(), self.params.families, self.targets_degrees);
+                let (problem, lm, x) = stage(&self.reference, self.scaled_net(), self.scale, &self.params, self.targets_degrees, true, &self.measures)?;
+                (self.problem, self.lm, self.x) = (problem, lm, x);
+            } else {
+                self.converged = settled;
+            }
+        }
+        self.measures = self.reference.measure(&self.net(), self.params.families, self.targets_degrees);
+        let mut report = BaseMeshReport::new(&self.measures, self.targets_degrees, self.params.tolerance_degrees);
+        report.iterations = self.iterations;
+        report.step_iterations = ran;
+        report.converged = self.converged;
+        report.energy = energy;
+        self.last_report = report;
+        Ok(self.last_report.clone())
+    }
+
+    /// The report of the last `step` (or of the start).
+    pub fn report(&self) -> &BaseMeshReport {
+        &self.last_report
+    }
+
+    /// The report of the net as given, before any iteration.
+    pub fn initial_report(&self) -> &BaseMeshReport {
+        &self.initial
+    }
+
+    /// The net at the current positions, in the caller's units.
+    pub fn net(&self) -> NetMesh {
+        self.problem.net().with_positions(self.positions())
+    }
+
+    /// The current vertex positions, in the caller's units.
+    pub fn positions(&self) -> Vec<Vec3> {
+        (0..self.problem.net().vertex_count()).map(|v| vec3(&self.x, 3 * v) / self.scale).collect()
+    }
+
+    /// The node at every vertex inside a row and a column: its ruling angle and axis, from the
+    /// strips of the current net.
+    pub fn nodes(&self) -> &[NodeRuling] {
+        &self.measures.nodes
+    }
+
+    /// Each family's rectifying strips of `width` on the current net (the developable strip of
+    /// planar quads fitted to the common node rulings, [`super::node_torsion`]), judged against
+    /// the reference at each family's target with `tolerance_degrees`.
+    /// Errors: `InvalidParameter` for a width or tolerance that is not finite and positive.
+    pub fn strips(&self, width: f64, tolerance_degrees: f64) -> Result<[StripPattern; 2], BaseMeshError> {
+        if !(width.is_finite() && width > 0.0) {
+            return Err(BaseMeshError::InvalidParameter { name: "width", message: format!("must be finite and > 0, got {width}") });
+        }
+        if !(tolerance_degrees.is_finite() && tolerance_degrees > 0.0 && tolerance_degrees < 180.0) {
+            return Err(BaseMeshError::InvalidParameter { name: "tolerance_degrees", message: format!("must lie in (0°, 180°), got {tolerance_degrees}") });
+        }
+        let net = self.net();
+        let thetas = [0, 1].map(|k| target_family(self.params.families[k], self.targets_degrees[k]).theta_degrees());
+        Ok(net_strips(&net, &self.reference, &self.measures.rulings, width, thetas, tolerance_degrees))
+    }
+
+    pub fn params(&self) -> &BaseMeshParams {
+        &self.params
+    }
+
+    /// Each family's target along its polylines' direction (see [`BaseMeshReport::targets_degrees`]).
+    pub fn targets_degrees(&self) -> [f64; 2] {
+        self.targets_degrees
+    }
+
+    pub fn iterations(&self) -> usize {
+        self.iterations
+    }
+
+    pub fn is_converged(&self) -> bool {
+        self.converged
+    }
+
+    fn scaled_net(&self) -> NetMesh {
+        self.problem.net().with_positions((0..self.problem.net().vertex_count()).map(|v| vec3(&self.x, 3 * v)).collect())
+    }
+}
+
+/// A vertex whose offset from its closest reference point leans more than 30° off the normal
+/// there has slid past the reference's boundary (inside, the offset is along the normal).
+const BEYOND_BOUNDARY: f64 = 0.5;
+
+/// The problem, its solver and its start for the scaled `net`: the families alone, or with
+/// torsion-free nodes (rulings started from the strips of `measures`).
+fn stage(
+    reference: &Reference,
+    net: NetMesh,
+    scale: f64,
+    params: &BaseMeshParams,
+    targets_degrees: [f64; 2],
+    torsion_free: bool,
+    measures: &Measures,
+) -> Result<(BaseMeshProblem, LevenbergMarquardt, Vec<f64>), BaseMeshError> {
+    let curves = [0, 1].map(|k| CurveRows::new(params.families[k], targets_degrees[k]));
+    let anchors = anchors(reference, &net, scale);
+    let problem = BaseMeshProblem::new(net, curves, torsion_free, params.weights, anchors.clone());
+    let lm = LevenbergMarquardt::new(&problem, params.lm.clone())?;
+    let mut x = vec![0.0; problem.variable_count()];
+    for (v, p) in problem.net().positions().iter().enumerate() {
+        x[3 * v..3 * v + 3].copy_from_slice(p.as_slice());
+    }
+    initialise_auxiliaries(&problem, &anchors, &measures.rulings, &mut x);
+    Ok((problem, lm, x))
+}
+
+/// The reference's closest point and normal for every vertex of the scaled `net` (in parallel,
+/// deterministic).
+fn anchors(reference: &Reference, net: &NetMesh, scale: f64) -> Vec<Anchor> {
+    net.positions()
+        .par_iter()
+        .map(|p| {
+            let (point, normal, _) = reference.closest(&(p / scale));
+            let point = point * scale;
+            let offset = p - point;
+            let along = offset.dot(&normal);
+            Anchor { point, normal, beyond_boundary: (offset - normal * along).norm() > BEYOND_BOUNDARY * offset.norm() }
+        })
+        .collect()
+}
+
+/// `E(x)`, the weighted sum of squared residuals.
+fn energy(problem: &BaseMeshProblem, x: &[f64]) -> f64 {
+    let mut total = 0.0;
+    let mut residuals = Vec::new();
+    for b in 0..problem.block_count() {
+        residuals.clear();
+        residuals.resize(problem.block_residual_count(b), 0.0);
+        problem.evaluate_block(b, x, &mut residuals, None);
+        total += residuals.iter().map(|r| r * r).sum::<f64>();
+    }
+    total
+}

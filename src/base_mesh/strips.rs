@@ -1,0 +1,52 @@
+//! The rectifying strips of a base mesh: on every row and column, the developable strip of planar
+//! quads fitted to the common node rulings ([`super::node_torsion`]), given a width, unrolled and
+//! measured against the reference like the strips of level curves (Table 4).
+
+use super::net_mesh::NetMesh;
+use super::node_torsion::PolylineRulings;
+use super::report::Reference;
+use crate::mesh::Vec3;
+use crate::strips::{discrete_binormals, strip_with_rulings, PatternMetrics, SkippedCurve, StripLines, StripPattern, StripWarning, SurfaceProjector, Verdict};
+
+/// Each family's strips of `width` on `net` with the fitted `rulings`, judged at the angles
+/// `thetas` (along the polylines' direction) with `tolerance_degrees`. A strip's `curve` and
+/// `level` are its polyline's index.
+pub(crate) fn net_strips(net: &NetMesh, reference: &Reference, rulings: &PolylineRulings, width: f64, thetas: [f64; 2], tolerance_degrees: f64) -> [StripPattern; 2] {
+    let projector = SurfaceProjector::new(&reference.mesh);
+    [0, 1].map(|k| {
+        let (mut strips, mut skipped) = (Vec::new(), Vec::new());
+        for (index, (line, lines)) in net.polylines(k).iter().zip(&rulings[k]).enumerate() {
+            let centre: Vec<Vec3> = line.iter().map(|&v| net.positions()[v as usize]).collect();
+            let Some(lines) = lines else {
+                let warning = if centre.len() < 3 { StripWarning::TooFewPoints { points: centre.len() } } else { StripWarning::SolverFailed { message: "no developable strip of planar quads fits this polyline".into() } };
+                skipped.push(SkippedCurve { curve: index, warnings: vec![warning] });
+                continue;
+            };
+            let (sin, cos) = thetas[k].to_radians().sin_cos();
+            let targets: Vec<Vec3> = (0..centre.len())
+                .map(|i| {
+                    let normal = reference.closest(&centre[i]).1;
+                    let tangent = (centre[(i + 1).min(centre.len() - 1)] - centre[i.saturating_sub(1)]).try_normalize(0.0).unwrap_or_else(Vec3::zeros);
+                    normal * cos + normal.cross(&tangent) * sin
+                })
+                .collect();
+            let binormals: Vec<Vec3> = discrete_binormals(&centre)
+                .iter()
+                .zip(&targets)
+                .map(|(b, target)| b.map_or(*target, |b| if b.dot(target) < 0.0 { -b } else { b }))
+                .collect();
+            let toward: f64 = lines.iter().zip(&targets).map(|(d, t)| d.dot(t)).sum();
+            let rulings: Vec<Vec3> = lines.iter().map(|d| if toward < 0.0 { -d } else { *d }).collect();
+            let strip_lines = StripLines { curve: index, level: index as f64, centre, binormals, rulings };
+            let strip = strip_with_rulings(&projector, strip_lines, width, thetas[k], reference.diagonal, Vec::new());
+            if strip.is_finite() {
+                strips.push(strip);
+            } else {
+                skipped.push(SkippedCurve { curve: index, warnings: vec![StripWarning::NonFiniteInput] });
+            }
+        }
+        let metrics = PatternMetrics::from_strips(strips.iter().map(|s| &s.metrics));
+        let verdict = Verdict::judge(&strips, tolerance_degrees);
+        StripPattern { strips, skipped, metrics, verdict }
+    })
+}
