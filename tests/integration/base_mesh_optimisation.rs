@@ -44,11 +44,11 @@ fn grid_polylines(index: &BTreeMap<(i32, i32), u32>, size: i32) -> (Vec<Vec<u32>
     (runs(&|a, b| (a, b)), runs(&|a, b| (b, a)))
 }
 
-const HELIX_RADIUS: f64 = 10.0;
+pub(crate) const HELIX_RADIUS: f64 = 10.0;
 
 /// A net of ±45° helices on the cylinder of radius 10 (development coordinates `s = Rφ`, `z`),
 /// each vertex moved by up to `noise` in each coordinate; rows and columns, and the surface.
-fn helix_net(noise: f64) -> (NetMesh, TriMesh) {
+pub(crate) fn helix_net(noise: f64) -> (NetMesh, TriMesh) {
     use lamella::surfaces::{cylinder_patch, CylinderPatch};
     let radius = HELIX_RADIUS;
     let surface = cylinder_patch(&CylinderPatch { radius, span: 2.6, height: 15.0, target_vertices: 3000, irregularity: 0.3, seed: 4 }).unwrap().into_mesh().unwrap();
@@ -143,7 +143,7 @@ fn converge(solver: &mut BaseMeshSolver, cap: usize) {
 
 /// The signed angle of Sec. 3.1 between the discrete binormal at every inner vertex of family
 /// `k`'s polylines and the exact surface normal `normal`.
-fn polyline_angles(net: &NetMesh, k: usize, normal: impl Fn(&Vec3) -> Vec3) -> Vec<f64> {
+pub(crate) fn polyline_angles(net: &NetMesh, k: usize, normal: impl Fn(&Vec3) -> Vec3) -> Vec<f64> {
     let p = net.positions();
     let mut angles = Vec::new();
     for line in net.polylines(k) {

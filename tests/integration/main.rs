@@ -21,6 +21,7 @@ mod cli_errors;
 mod cli_fabricate;
 mod cli_guides;
 mod cli_net;
+mod cli_optimise;
 mod cli_reshape;
 mod cli_shade;
 mod cli_slope;

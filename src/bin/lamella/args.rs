@@ -58,6 +58,12 @@ pub enum Command {
     /// (coloured by displacement), report.json; exits 3 when the strips on the moved surface
     /// still miss θ.
     Reshape(ReshapeArgs),
+    /// Optimise a net's vertices (paper Sec. 3.5) so that its rows and columns form the asked
+    /// families exactly near a reference surface, with --torsion-free also a common ruling of
+    /// both strips at every node (Sec. 5.2.1, Eq. 21). Reads the net.obj of `net`. Writes net.obj
+    /// (optimised), strips_<k>.obj, nodes.csv, report.json; exits 3 when a family misses its angle
+    /// or the nodes are not torsion-free as asked.
+    Optimise(OptimiseArgs),
     /// A shading system (paper Sec. 6): strips that block the sun of the given dates and hours
     /// (or let it through where --pass says), then a sun-path check casting the sun's rays from
     /// behind the surface through the strips. Writes curves.obj, strips.obj, rulings.obj,
@@ -424,6 +430,39 @@ pub struct NetArgs {
     /// The workshop files of both families' strips, with the nodes marked and kept clear of splices.
     #[command(flatten)]
     pub fabrication: Box<FabricationFlags>,
+    #[command(flatten)]
+    pub out: OutArgs,
+    #[command(flatten)]
+    pub verbosity: VerbosityArgs,
+}
+
+#[derive(Args, Debug, Clone)]
+pub struct OptimiseArgs {
+    /// The net: vertices, and its rows and columns as `l` polylines after `o rows` and
+    /// `o columns` (the net.obj of `lamella net`).
+    #[arg(long, value_name = "net.obj")]
+    pub net: PathBuf,
+    /// The family of the rows and of the columns, comma-separated: P<θ> (pseudo-geodesics of
+    /// angle θ in degrees), G (geodesics) or A (asymptotic curves), e.g. P60,P60.
+    #[arg(long, value_name = "F,G")]
+    pub types: String,
+    /// Also make every node torsion-free: one ruling shared by both strips there (Eq. 21).
+    #[arg(long)]
+    pub torsion_free: bool,
+    /// The reference surface the net stays near, a triangle mesh in OBJ format [default: the
+    /// built-in hall roof, the default surface of `lamella net`].
+    #[arg(long, value_name = "M.obj")]
+    pub reference: Option<PathBuf>,
+    /// Most Levenberg–Marquardt iterations.
+    #[arg(long, value_name = "N", default_value_t = 300)]
+    pub max_iterations: usize,
+    /// Strip width in metres [default: half the mean segment length of the net].
+    #[arg(long, value_name = "M")]
+    pub width: Option<f64>,
+    /// Largest angle error (degrees) of a family at a vertex, measured against the reference's
+    /// normal; above it the command exits 3.
+    #[arg(long, value_name = "DEGREES", default_value_t = 1.0)]
+    pub tolerance: f64,
     #[command(flatten)]
     pub out: OutArgs,
     #[command(flatten)]

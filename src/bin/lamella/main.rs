@@ -19,6 +19,8 @@ mod info;
 mod mesh_input;
 mod metrics;
 mod net_cmd;
+mod net_obj;
+mod optimise_cmd;
 mod output_dir;
 mod progress;
 mod report_json;
@@ -74,6 +76,7 @@ fn run(cli: &Cli) -> CliResult<()> {
         Some(Command::Net(args)) => net_cmd::run(args),
         Some(Command::View(args)) => view_cmd::run(args),
         Some(Command::Reshape(args)) => reshape_cmd::run(args),
+        Some(Command::Optimise(args)) => optimise_cmd::run(args),
         Some(Command::Shade(args)) => shade_cmd::run(args),
         Some(Command::Surface(args)) => surface_cmd::run(args),
     }

@@ -9,6 +9,7 @@ use crate::console::err_line;
 use crate::error::{CliError, CliResult};
 use crate::fabrication_files::{self, cli_error, overstress_warning, report_section, summary_line};
 use crate::mesh_input::{load_mesh, mesh_name, read_bytes};
+use crate::net_obj::net_obj;
 use crate::output_dir::OutputDir;
 use crate::progress::{note, summary, Verbosity};
 use crate::strip_obj::{curves_obj, strips_obj};
@@ -30,25 +31,26 @@ use std::time::Instant;
 /// Iterations per `step` between progress notes.
 const STEP: usize = 10;
 
-/// Parses `--families`: two comma-separated names, `P<θ>` (pseudo-geodesics of angle θ in
-/// degrees, in (0, 180)), `G` (geodesics) or `A` (asymptotic curves).
-pub fn parse_families(text: &str) -> CliResult<Vec<Family>> {
-    let families: Vec<Family> = text.split(',').map(|name| parse_family(name.trim())).collect::<CliResult<_>>()?;
+/// Parses a pair of families given to `flag` (`--families`, `--types`): two comma-separated
+/// names, `P<θ>` (pseudo-geodesics of angle θ in degrees, in (0, 180)), `G` (geodesics) or `A`
+/// (asymptotic curves).
+pub fn parse_families(flag: &str, text: &str) -> CliResult<Vec<Family>> {
+    let families: Vec<Family> = text.split(',').map(|name| parse_family(flag, name.trim())).collect::<CliResult<_>>()?;
     if families.len() != 2 {
-        return Err(CliError::bad_input(format!("--families: a net has two families, got {} in '{}'", families.len(), lamella::input::clip(text))));
+        return Err(CliError::bad_input(format!("{flag}: a net has two families, got {} in '{}'", families.len(), lamella::input::clip(text))));
     }
     Ok(families)
 }
 
-fn parse_family(name: &str) -> CliResult<Family> {
-    let bad = || CliError::bad_input(format!("--families: '{}' is not P<θ>, G or A", lamella::input::clip(name)));
+fn parse_family(flag: &str, name: &str) -> CliResult<Family> {
+    let bad = || CliError::bad_input(format!("{flag}: '{}' is not P<θ>, G or A", lamella::input::clip(name)));
     match name {
         "A" | "a" => Ok(Family::Asymptotic),
         "G" | "g" => Ok(Family::Geodesic),
         _ => {
             let theta: f64 = name.strip_prefix(['P', 'p']).ok_or_else(bad)?.parse().map_err(|_| bad())?;
             if !(theta.is_finite() && theta > 0.0 && theta < 180.0) {
-                return Err(CliError::bad_input(format!("--families: θ of '{}' must lie in (0°, 180°)", lamella::input::clip(name))));
+                return Err(CliError::bad_input(format!("{flag}: θ of '{}' must lie in (0°, 180°)", lamella::input::clip(name))));
             }
             Ok(Family::from_theta(theta))
         }
@@ -56,7 +58,7 @@ fn parse_family(name: &str) -> CliResult<Family> {
 }
 
 /// A family's short name in file names and reports.
-fn family_label(family: &Family) -> String {
+pub fn family_label(family: &Family) -> String {
     match family {
         Family::PseudoGeodesic { theta_degrees } => format!("P{theta_degrees}"),
         Family::Geodesic => "G".into(),
@@ -79,7 +81,7 @@ fn start(args: &NetArgs) -> CliResult<(NetSolver, TriMesh, String)> {
         return Ok((solver, mesh, format!("net session {}", path.display())));
     }
     // Invariant: clap requires --families unless --resume is given.
-    let families = parse_families(args.families.as_deref().ok_or_else(|| CliError::bad_input("give --families"))?)?;
+    let families = parse_families("--families", args.families.as_deref().ok_or_else(|| CliError::bad_input("give --families"))?)?;
     let mut params = NetParams::new(families[0], families[1]);
     params.intersection_degrees = args.angle;
     params.min_intersection_degrees = args.min_angle;
@@ -123,7 +125,7 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
         out.write(&format!("curves_{k}.obj"), curves_obj(&run.curves))?;
         out.write(&format!("strips_{k}.obj"), strips_obj(&run.pattern))?;
     }
-    out.write("net.obj", net_obj(&net))?;
+    out.write("net.obj", crossings_obj(&net))?;
     out.write("net.bin", solver.to_bytes())?;
     out.write("nodes.csv", nodes_csv(&nodes))?;
     out.write("unrolled.svg", cut_sheet_svg(&cut_pieces(&runs, &nodes)))?;
@@ -239,22 +241,9 @@ fn cut_pieces<'a>(runs: &'a [StripRun], nodes: &[Node]) -> Vec<CutPiece<'a>> {
 }
 
 /// net.obj: the crossings as vertices, the quads as faces, rows and columns as `l` polylines.
-fn net_obj(net: &QuadNet) -> String {
-    let mut text = String::from("# lamella net: vertex (i, j) = crossing of level i of field 0 with level j of field 1\n");
-    for v in &net.vertices {
-        let _ = writeln!(text, "v {} {} {}", v.position.x, v.position.y, v.position.z);
-    }
-    for q in &net.quads {
-        let _ = writeln!(text, "f {} {} {} {}", q[0] + 1, q[1] + 1, q[2] + 1, q[3] + 1);
-    }
-    for (name, lines) in [("rows", &net.rows), ("columns", &net.columns)] {
-        let _ = writeln!(text, "o {name}");
-        for line in lines {
-            let indices: Vec<String> = line.iter().map(|v| (v + 1).to_string()).collect();
-            let _ = writeln!(text, "l {}", indices.join(" "));
-        }
-    }
-    text
+fn crossings_obj(net: &QuadNet) -> String {
+    let positions: Vec<_> = net.vertices.iter().map(|v| v.position).collect();
+    net_obj("lamella net: vertex (i, j) = crossing of level i of field 0 with level j of field 1", &positions, &net.quads, &net.rows, &net.columns)
 }
 
 /// nodes.csv: one row per node.

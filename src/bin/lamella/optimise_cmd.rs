@@ -1,0 +1,175 @@
+//! `lamella optimise`: the base-mesh optimisation of paper Sec. 3.5 on the net.obj of `net`: its
+//! rows and columns made into the asked families exactly near the reference surface, with
+//! `--torsion-free` also a ruling shared by both strips at every node (Sec. 5.2.1, Eq. 21); the
+//! strips of the optimised net, its nodes and a report measured against the reference; exit 3
+//! when a family misses its angle or the nodes are not torsion-free as asked.
+use crate::args::OptimiseArgs;
+use crate::config::DEFAULT_OUT;
+use crate::error::{CliError, CliResult};
+use crate::mesh_input::{load_mesh, mesh_name};
+use crate::net_cmd::{family_label, parse_families};
+use crate::net_obj::{net_obj, read_net_obj};
+use crate::output_dir::OutputDir;
+use crate::progress::{note, summary, Verbosity};
+use crate::strip_obj::strips_obj;
+use lamella::base_mesh::{BaseMeshParams, BaseMeshReport, BaseMeshSolver, NetMesh, NodeRuling, TORSION_FREE_DEGREES};
+use lamella::strips::StripPattern;
+use serde_json::json;
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// Iterations per `step` between progress notes.
+const STEP: usize = 10;
+
+pub fn run(args: &OptimiseArgs) -> CliResult<()> {
+    let started = Instant::now();
+    let verbosity = Verbosity::from(args.verbosity);
+    let families = parse_families("--types", &args.types)?;
+    if !(args.tolerance.is_finite() && args.tolerance > 0.0 && args.tolerance < 90.0) {
+        return Err(CliError::bad_input(format!("--tolerance: must lie in (0°, 90°), got {}", args.tolerance)));
+    }
+    if let Some(width) = args.width.filter(|w| !(w.is_finite() && *w > 0.0)) {
+        return Err(CliError::bad_input(format!("--width: must be finite and > 0, got {width}")));
+    }
+    let net = read_net_obj(&args.net)?;
+    let reference = load_mesh(args.reference.as_deref())?;
+    let mut params = BaseMeshParams::new(families[0], families[1]);
+    params.torsion_free = args.torsion_free;
+    params.tolerance_degrees = args.tolerance;
+    let mut solver = BaseMeshSolver::new(&net, &reference, params).map_err(|e| CliError::bad_input(format!("optimise: {e}")))?;
+    let width = match args.width {
+        Some(width) => width,
+        None => 0.5 * mean_segment(&net),
+    };
+    let target: PathBuf = args.out.out.clone().unwrap_or_else(|| PathBuf::from(DEFAULT_OUT));
+    let out = OutputDir::create(&target, args.out.force)?;
+    let labels: Vec<String> = families.iter().map(family_label).collect();
+    let name = mesh_name(args.reference.as_deref());
+    note(verbosity, &format!("{}: {} vertices, {} rows, {} columns; {} near {name}{}", args.net.display(), net.vertex_count(), net.rows().len(), net.columns().len(), labels.join(", "), if args.torsion_free { ", torsion-free nodes" } else { "" }));
+    note(verbosity, &progress_line(solver.initial_report()));
+    while solver.iterations() < args.max_iterations && !solver.is_converged() {
+        let report = solver.step(STEP.min(args.max_iterations - solver.iterations())).map_err(|e| CliError::internal(format!("optimise: {e}")))?;
+        if verbosity == Verbosity::Verbose {
+            note(verbosity, &progress_line(&report));
+        }
+    }
+    let strips = solver.strips(width, args.tolerance).map_err(|e| CliError::internal(format!("strips: {e}")))?;
+    let optimised = solver.net();
+    out.write("net.obj", net_obj("lamella optimise: the optimised net", optimised.positions(), &optimised.quads(), optimised.rows(), optimised.columns()))?;
+    for (k, pattern) in strips.iter().enumerate() {
+        out.write(&format!("strips_{k}.obj"), strips_obj(pattern))?;
+    }
+    out.write("nodes.csv", nodes_csv(&optimised, solver.nodes()))?;
+    let report = solver.report().clone();
+    let json = json!({
+        "net": args.net.display().to_string(),
+        "reference": name,
+        "families": labels,
+        "torsion_free_asked": args.torsion_free,
+        "tolerance_degrees": args.tolerance,
+        "width": width,
+        "initial": solver.initial_report(),
+        "final": &report,
+        "strips": strips.iter().map(|p| json!({ "count": p.strips.len(), "skipped": p.skipped.len(), "metrics": p.metrics, "verdict": p.verdict.message() })).collect::<Vec<_>>(),
+        "seconds": started.elapsed().as_secs_f64(),
+    });
+    out.write("report.json", serde_json::to_string_pretty(&json).map_err(|e| CliError::internal(format!("report.json: {e}")))?)?;
+    let target = out.target().display().to_string();
+    out.commit()?;
+    summary(
+        verbosity,
+        &format!(
+            "{} iterations{}\n{}\n{}done in {:.1} s; wrote {target}/ (net.obj, strips_<k>.obj, nodes.csv, report.json)",
+            report.iterations,
+            if report.converged { ", converged" } else { "" },
+            outcome_lines(&labels, solver.initial_report(), &report, &strips),
+            if args.torsion_free { "" } else { "(node torsion as it stands; --torsion-free asks for 0)\n" },
+            started.elapsed().as_secs_f64()
+        ),
+    )?;
+    let mut missed = Vec::new();
+    for (k, family) in report.families.iter().enumerate() {
+        if family.max_error_degrees > args.tolerance || family.straight > 0 {
+            let at = family.worst.map_or(String::new(), |w| format!(" (worst at ({:.3}, {:.3}, {:.3}))", w.point[0], w.point[1], w.point[2]));
+            missed.push(format!("family {} misses {:.1}° by up to {:.2}°{at}, {} straight vertices", labels[k], report.targets_degrees[k], family.max_error_degrees, family.straight));
+        }
+    }
+    if args.torsion_free && !report.torsion_free {
+        missed.push(format!("nodes are not torsion-free: rulings up to {:.2}° apart (at vertex {}; {TORSION_FREE_DEGREES}° allowed)", report.node_torsion.max_degrees, report.node_torsion.worst_vertex.map_or("-".into(), |v| v.to_string())));
+    }
+    if missed.is_empty() {
+        Ok(())
+    } else {
+        Err(CliError::NoAcceptableFamily(format!("{}; try more --max-iterations, a larger --tolerance, other families or a finer net", missed.join("; "))))
+    }
+}
+
+fn mean_segment(net: &NetMesh) -> f64 {
+    let lengths: Vec<f64> = (0..2).flat_map(|k| net.segments(k).map(|[a, b]| (net.positions()[b as usize] - net.positions()[a as usize]).norm()).collect::<Vec<_>>()).collect();
+    lengths.iter().sum::<f64>() / lengths.len().max(1) as f64
+}
+
+fn progress_line(r: &BaseMeshReport) -> String {
+    let errors: Vec<String> = r.families.iter().map(|f| format!("{:.3}° max", f.max_error_degrees)).collect();
+    format!(
+        "iteration {}: energy {:.3e}, angle errors {}, node rulings up to {:.2}° apart, {:.3} % of the diagonal from the reference",
+        r.iterations,
+        r.energy,
+        errors.join(" / "),
+        r.node_torsion.max_degrees,
+        r.deviation.max_percent
+    )
+}
+
+/// Per family: the angle error before and after and its strips; then the nodes and the deviation.
+fn outcome_lines(labels: &[String], initial: &BaseMeshReport, last: &BaseMeshReport, strips: &[StripPattern; 2]) -> String {
+    let mut text = String::new();
+    for (k, label) in labels.iter().enumerate() {
+        let _ = writeln!(
+            text,
+            "{label} (held at {:.2}°): angle error max {:.3}° → {:.3}°, RMS {:.3}° → {:.3}°; {} strips, strip planes max angle error {:.3}°",
+            last.targets_degrees[k],
+            initial.families[k].max_error_degrees,
+            last.families[k].max_error_degrees,
+            initial.families[k].rms_error_degrees,
+            last.families[k].rms_error_degrees,
+            strips[k].strips.len(),
+            strips[k].metrics.max_quad_angle_error_degrees
+        );
+    }
+    let _ = write!(
+        text,
+        "{} nodes: rulings apart max {:.2}° → {:.2}°, RMS {:.2}° → {:.2}°; farthest vertex {:.4} % of the diagonal from the reference",
+        last.node_torsion.nodes,
+        initial.node_torsion.max_degrees,
+        last.node_torsion.max_degrees,
+        initial.node_torsion.rms_degrees,
+        last.node_torsion.rms_degrees,
+        last.deviation.max_percent
+    );
+    text
+}
+
+/// nodes.csv: one row per vertex inside a row and a column.
+fn nodes_csv(net: &NetMesh, nodes: &[NodeRuling]) -> String {
+    let mut text = String::from("vertex,x,y,z,ruling_angle_degrees,axis_x,axis_y,axis_z\n");
+    let cell = |value: Option<f64>| value.map_or(String::new(), |v| v.to_string());
+    for node in nodes {
+        let p = net.positions()[node.vertex];
+        let axis = node.axis.map(|a| [a.x, a.y, a.z]);
+        let _ = writeln!(
+            text,
+            "{},{},{},{},{},{},{},{}",
+            node.vertex,
+            p.x,
+            p.y,
+            p.z,
+            cell(node.angle_degrees),
+            cell(axis.map(|a| a[0])),
+            cell(axis.map(|a| a[1])),
+            cell(axis.map(|a| a[2]))
+        );
+    }
+    text
+}
