@@ -215,6 +215,11 @@ typedef int32_t LmlStatus;
 #endif // __STDC_VERSION__ >= 202311L
 #endif // __cplusplus
 
+// A base-mesh optimisation session (opaque): a copy of the reference surface, the net with its
+// auxiliary variables (normals, binormals, rulings) and the solver state. Create it with
+// `lml_base_mesh_new` or `lml_base_mesh_from_strip_net`, release it with `lml_base_mesh_free`.
+typedef struct LmlBaseMesh LmlBaseMesh;
+
 // Level polylines of a field (opaque), each with its level value, per-point surface normals and
 // a closed flag, together with the surface they lie on. Create it with `lml_curves_new` or
 // `lml_curves_new_uniform`, release it with `lml_curves_free`. Immutable once created.
@@ -745,6 +750,60 @@ typedef struct LmlReshapeReport {
   double energy_close;
   double energy_edge;
 } LmlReshapeReport;
+
+// The state of a base-mesh optimisation (written by the library; the caller owns the struct),
+// measured from outside: each family's angle at the net's own vertices against the reference's
+// smooth normal, the distance of the net from the reference, and the ruling angle at the nodes.
+// Lengths in the net's units, angles in degrees; index 0 is the rows, 1 the columns. Never NaN.
+typedef struct LmlBaseMeshReport {
+  // Iterations run since the session was created.
+  uint64_t iterations;
+  // 1 when converged (further steps do nothing), else 0.
+  uint64_t converged;
+  // Each family's target angle along its polylines' direction: θ, or 180° − θ for a
+  // pseudo-geodesic family whose polylines run the other way (the same curves).
+  double target_degrees[2];
+  // RMS and maximum of each family's |θ_measured − target| over its measured vertices.
+  double angle_error_rms_degrees[2];
+  double angle_error_max_degrees[2];
+  // Inner vertices of each family where the angle was measured, and those where the polyline
+  // is straight (no osculating plane: exact for geodesics and asymptotic curves, a miss for
+  // pseudo-geodesics).
+  uint64_t measured_vertices[2];
+  uint64_t straight_vertices[2];
+  // Largest and RMS distance of a vertex from the reference, and the largest in % of the
+  // reference's bounding-box diagonal.
+  double max_deviation;
+  double rms_deviation;
+  double max_deviation_percent;
+  // Nodes (vertices inside a row and a column) whose two strips both exist, and the largest
+  // and RMS angle between their rulings there (0 at a torsion-free node, Sec. 5.2.1).
+  uint64_t node_count;
+  double node_ruling_angle_max_degrees;
+  double node_ruling_angle_rms_degrees;
+  // 1 when every measured vertex of both families is within 1° of its target (and a
+  // pseudo-geodesic family is nowhere straight), else 0.
+  uint64_t families_met;
+  // 1 when every measured node's ruling angle is at most 0.5°, else 0.
+  uint64_t torsion_free;
+  // The weighted energy (sum of squared residuals) being minimised, on the net scaled to mean
+  // segment length 1.
+  double energy;
+} LmlBaseMeshReport;
+
+// One node of the optimised net (a vertex inside a row and a column): the angle between the
+// rulings of its row's and its column's strips there (Sec. 5.2.1), and the node axis.
+typedef struct LmlBaseMeshNode {
+  // The vertex (index into the net's positions).
+  uint32_t vertex;
+  // 1 when both polylines through the node carry a strip, so that the next two are defined;
+  // else 0 and they are 0.
+  uint32_t defined;
+  // Angle between the two rulings as lines, in [0°, 90°]: 0 for a torsion-free node.
+  double ruling_angle_degrees;
+  // Unit node axis: the mean of the two unit rulings.
+  double axis[3];
+} LmlBaseMeshNode;
 
 // Where the building stands, how the model is oriented and when the shading is for (filled by
 // `lml_shading_site_default`, then edited). Angles in degrees, hours 0–24.
@@ -2100,6 +2159,127 @@ LmlStatus lml_reshape_deviations(const struct LmlReshape *reshape,
                                  double *values,
                                  size_t capacity,
                                  size_t *needed);
+
+// Starts optimising a net of rows and columns (paper Sec. 3.5) so that each family of polylines
+// becomes the asked curves (pseudo-geodesic, geodesic or asymptotic) on or near `reference`,
+// with the default weights; with `torsion_free` non-zero, also so that the strips of the row and
+// of the column through every node share its ruling (Eq. 21), in a second stage once the
+// families have settled. Then every polyline carries a developable strip of planar quads
+// (`lml_base_mesh_strips`).
+//
+// - `reference`: the surface the net should stay on (copied).
+// - `xyz`: `3 * vertex_count` doubles, the net's vertices (finite, in the reference's units).
+// - `polyline_vertices`: `polyline_vertex_count` zero-based vertex indices: the rows, then the
+//   columns, each in order along its polyline, one after another.
+// - `polyline_lengths`: `row_count + column_count` vertex counts (each ≥ 2), the rows' first;
+//   they must sum to `polyline_vertex_count`. A vertex lies on at most one row and one column;
+//   consecutive vertices of a polyline are at distinct points.
+// - `theta_degrees_rows`, `theta_degrees_columns`: each family by its angle θ in [0°, 180°]:
+//   0° and 180° asymptotic curves, 90° geodesics, others pseudo-geodesics of that signed angle
+//   (each held at θ or 180° − θ, whichever its polylines are nearer to as given).
+// - `out`: receives the new session (release with `lml_base_mesh_free`); NULL on failure.
+//
+// The arrays are copied; the caller keeps them.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer with a non-zero count, a
+// count overflow, lengths not summing to `polyline_vertex_count`, θ out of range, a non-finite
+// coordinate, a polyline of fewer than two vertices or referring to a vertex out of range, a
+// vertex on two rows or two columns, coincident consecutive vertices, no vertex inside a
+// polyline of three or more: the message names the argument, vertex or polyline);
+// `LML_STATUS_INTERNAL_ERROR` (the problem could not be set up).
+LmlStatus lml_base_mesh_new(const struct LmlMesh *reference,
+                            const double *xyz,
+                            size_t vertex_count,
+                            const uint32_t *polyline_vertices,
+                            size_t polyline_vertex_count,
+                            const uint32_t *polyline_lengths,
+                            size_t row_count,
+                            size_t column_count,
+                            double theta_degrees_rows,
+                            double theta_degrees_columns,
+                            uint32_t torsion_free,
+                            struct LmlBaseMesh **out);
+
+// Starts optimising the quad net of a gridshell (`lml_strip_net_new`; its rows are the runs of
+// crossings along one level of the first field, its columns those along one level of the
+// second) as `lml_base_mesh_new` does: the net's vertices are `lml_strip_net_vertices`.
+//
+// - `net`: the strip net (not retained); `reference`: the surface (copied), usually the mesh of
+//   the net session the strip net came from.
+// - θ, `torsion_free` and `out` as in `lml_base_mesh_new`.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, θ out of range, named;
+// a net without a vertex inside a row or column of three or more); `LML_STATUS_INTERNAL_ERROR`.
+LmlStatus lml_base_mesh_from_strip_net(const struct LmlStripNet *net,
+                                       const struct LmlMesh *reference,
+                                       double theta_degrees_rows,
+                                       double theta_degrees_columns,
+                                       uint32_t torsion_free,
+                                       struct LmlBaseMesh **out);
+
+// Releases a session. NULL is accepted and ignored. The handle must not be used again.
+void lml_base_mesh_free(struct LmlBaseMesh *base_mesh);
+
+// Runs at most `max_iterations` iterations (the reference's closest points found again before
+// each) and writes the state to `*report` (may be NULL). With torsion-free nodes asked for, the
+// second stage starts within a step once the families have settled.
+//
+// Returns `LML_STATUS_MORE` (step again), `LML_STATUS_CONVERGED`, `LML_STATUS_INVALID_ARGUMENT`
+// (NULL or misaligned pointer) or `LML_STATUS_DID_NOT_CONVERGE` (an iteration failed
+// numerically; the net keeps its last good positions).
+LmlStatus lml_base_mesh_step(struct LmlBaseMesh *base_mesh,
+                             uint32_t max_iterations,
+                             struct LmlBaseMeshReport *report);
+
+// Writes the state after the last step (or after creation) to `*report`.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_base_mesh_report(const struct LmlBaseMesh *base_mesh,
+                               struct LmlBaseMeshReport *report);
+
+// Writes the state of the net as given, before any iteration, to `*report`: what the
+// optimisation started from.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_base_mesh_initial_report(const struct LmlBaseMesh *base_mesh,
+                                       struct LmlBaseMeshReport *report);
+
+// Copies the current vertex positions (xyz per vertex, `3 n` doubles, in the net's units, in
+// the order they were given) into `xyz` with the two-call pattern: `*needed` receives `3 n`;
+// with `capacity` below it nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned
+// (`xyz` may be NULL then). Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or
+// `LML_STATUS_INVALID_ARGUMENT` (NULL session or `needed`).
+LmlStatus lml_base_mesh_positions(const struct LmlBaseMesh *base_mesh,
+                                  double *xyz,
+                                  size_t capacity,
+                                  size_t *needed);
+
+// Copies the nodes (every vertex inside a row and a column, in vertex order) with their ruling
+// angles from the strips of the net as it stands after the last step, into `nodes` with the
+// two-call pattern (`*needed` receives the node count). Returns as `lml_base_mesh_positions`.
+LmlStatus lml_base_mesh_nodes(const struct LmlBaseMesh *base_mesh,
+                              struct LmlBaseMeshNode *nodes,
+                              size_t capacity,
+                              size_t *needed);
+
+// Builds the rectifying strips of family `k` (0: rows, 1: columns) on the current net: on every
+// polyline, the developable strip of planar quads whose rulings are fitted to the nodes'
+// common rulings (Sec. 5.2.1), cut to `width` (> 0, the net's units) and unrolled, judged with
+// `tolerance_degrees` in (0, 180) against the family's target angle (`target_degrees[k]` of the
+// report) on the reference. The strips are a new `LmlStrips` handle (read it with the
+// `lml_strips_*` functions, release it with `lml_strips_free`); a strip's curve index is its
+// polyline's index within the family. Polylines that carry no strip are listed by
+// `lml_strips_skipped`.
+//
+// Returns `LML_STATUS_OK` (every strip within the tolerance, no flipped quad);
+// `LML_STATUS_NO_ACCEPTABLE_FAMILY` (the strips are built and `*out` is valid, but some miss the
+// angle by more than the tolerance, have flipped quads or leave the surface, or no strip could
+// be built: `lml_last_error_message()` names the worst strip, `lml_strips_verdict` gives the
+// numbers); `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `k` > 1, `width` or
+// `tolerance_degrees` out of range, named).
+LmlStatus lml_base_mesh_strips(const struct LmlBaseMesh *base_mesh,
+                               uint32_t k,
+                               double width,
+                               double tolerance_degrees,
+                               struct LmlStrips **out);
 
 // Creates the Brauner surface of the paper's Fig. 32 (Eq. 23 with `f = e^{−v}(cos u + u sin u
 // + 2v cos u)`): `x = cos²u − 2v`, `y = sin u cos u − u`, `z = 2μ e^{−v} cos u` over

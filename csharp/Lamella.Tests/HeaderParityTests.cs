@@ -42,6 +42,8 @@ namespace Lamella.Tests
             { "LmlFabricationSummary", typeof(FabricationSummary) },
             { "LmlNetReport", typeof(NetReportRecord) },
             { "LmlReshapeReport", typeof(ReshapeReportRecord) },
+            { "LmlBaseMeshReport", typeof(BaseMeshReportRecord) },
+            { "LmlBaseMeshNode", typeof(BaseMeshNodeRecord) },
             { "LmlNode", typeof(NodeRecord) },
             { "LmlShadingSite", typeof(ShadingSite) },
             { "LmlShadingReport", typeof(ShadingReportRecord) },

@@ -60,6 +60,9 @@ namespace Lamella
     {
         private readonly StripNetHandle handle;
 
+        /// <summary>The native net, for <see cref="BaseMeshSolver"/>.</summary>
+        internal StripNetHandle Handle => handle;
+
         /// <summary>
         /// The net of <paramref name="net"/>'s two fields at the levels of <paramref name="first"/> (strips on field 0's
         /// level curves, <see cref="LevelCurves.OfNet"/>) and <paramref name="second"/> (field 1's), and their nodes.

@@ -12,6 +12,7 @@
 use super::net_mesh::NetMesh;
 use crate::mesh::Vec3;
 use crate::strips::{fitted_rulings, version_one_rulings};
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// Largest ruling angle at a node (degrees) that counts as torsion-free.
@@ -41,7 +42,7 @@ pub struct NodeRuling {
 pub type PolylineRulings = [Vec<Option<Vec<Vec3>>>; 2];
 
 /// Rounds of refitting each family to the other's rulings.
-const ROUNDS: usize = 4;
+const ROUNDS: usize = 3;
 
 /// The points of each polyline of family `k`.
 fn polyline_points(net: &NetMesh, k: usize) -> Vec<Vec<Vec3>> {
@@ -65,14 +66,19 @@ fn rulings_at(net: &NetMesh, rulings: &PolylineRulings) -> Vec<[Option<Vec3>; 2]
 /// The strip of every polyline, chosen as the module describes.
 pub fn polyline_rulings(net: &NetMesh) -> PolylineRulings {
     let points = [0, 1].map(|k| polyline_points(net, k));
-    let mut rulings: PolylineRulings = [0, 1].map(|k| points[k].iter().map(|p| fitted_rulings(p, &version_one_rulings(p, &[]))).collect());
+    let mut rulings: PolylineRulings = [0, 1].map(|k| points[k].par_iter().map(|p| fitted_rulings(p, &version_one_rulings(p, &[]))).collect());
     for _ in 0..ROUNDS {
         for k in 0..2 {
             let at = rulings_at(net, &rulings);
-            for (l, line) in net.polylines(k).iter().enumerate() {
-                let targets: Vec<Option<Vec3>> = line.iter().map(|&v| at[v as usize][1 - k]).collect();
-                if let Some(fitted) = fitted_rulings(&points[k][l], &targets) {
-                    rulings[k][l] = Some(fitted);
+            let refitted: Vec<Option<Vec<Vec3>>> = net
+                .polylines(k)
+                .par_iter()
+                .zip(&points[k])
+                .map(|(line, p)| fitted_rulings(p, &line.iter().map(|&v| at[v as usize][1 - k]).collect::<Vec<_>>()))
+                .collect();
+            for (old, new) in rulings[k].iter_mut().zip(refitted) {
+                if new.is_some() {
+                    *old = new;
                 }
             }
         }

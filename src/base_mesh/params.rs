@@ -39,6 +39,9 @@ pub struct BaseMeshParams {
     /// Ask for torsion-free nodes (Eq. 21): a common ruling at every node, in the rectifying
     /// plane of both polylines, and developable strips between consecutive rulings.
     pub torsion_free: bool,
+    /// With torsion-free nodes: optimise the families alone until they settle, then add the
+    /// rows of Eq. 21 (default, `true`); `false` puts them on from the first iteration.
+    pub families_first: bool,
     pub weights: BaseMeshWeights,
     /// A family counts as met when every measured vertex is within this many degrees of its
     /// angle (the verdict of the report). Default 1°.
@@ -55,6 +58,7 @@ impl BaseMeshParams {
         BaseMeshParams {
             families: [rows.by_name(), columns.by_name()],
             torsion_free: false,
+            families_first: true,
             weights: BaseMeshWeights::default(),
             tolerance_degrees: 1.0,
             relative_tolerance: 1e-6,

@@ -75,8 +75,8 @@ impl CurveRows {
 pub(crate) struct Anchor {
     pub point: Vec3,
     pub normal: Vec3,
-    /// The vertex has slid past the reference's boundary (its offset from `point` is mostly
-    /// tangential): the tangential offset is held too.
+    /// The vertex has slid past the reference's boundary (its offset from `point` was mostly
+    /// tangential, now or before): the tangential offset is held too.
     pub beyond_boundary: bool,
 }
 

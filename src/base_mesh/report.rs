@@ -10,6 +10,7 @@ use crate::field::Family;
 use crate::mesh::{FaceBvh, TriMesh, Vec3};
 use crate::quality::{polyline_family_angles, FamilyAngles};
 use crate::strips::project_on;
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// Distance of the net's vertices from the reference surface.
@@ -31,6 +32,9 @@ pub struct BaseMeshReport {
     /// Iterations the last step ran.
     pub step_iterations: usize,
     pub converged: bool,
+    /// The torsion-free rows of Eq. 21 are on: with torsion-free nodes asked for, the families
+    /// are optimised alone first, then with the nodes.
+    pub torsion_free_stage: bool,
     /// The weighted energy (sum of squared residuals) at the current net.
     pub energy: f64,
     /// Each family's target angle along its polylines' direction (a pseudo-geodesic family whose
@@ -75,26 +79,35 @@ impl Reference {
         project_on(&self.mesh, &self.bvh, p).map_or((*p, Vec3::z(), f64::INFINITY), |s| (s.point, s.normal, s.distance))
     }
 
-    /// Each polyline of family `k` as a curve with the reference's normals.
-    pub fn curves(&self, net: &NetMesh, k: usize) -> Vec<LevelCurve> {
+    /// Each polyline of family `k` as a curve with the reference's `normals` (one per vertex).
+    fn curves(net: &NetMesh, k: usize, normals: &[Vec3]) -> Vec<LevelCurve> {
         net.polylines(k)
             .iter()
             .enumerate()
-            .map(|(index, line)| {
-                let points: Vec<Vec3> = line.iter().map(|&v| net.positions()[v as usize]).collect();
-                let normals = points.iter().map(|p| self.closest(p).1).collect();
-                LevelCurve { level: index as f64, points, normals, closed: false, singular_vertices: Vec::new() }
+            .map(|(index, line)| LevelCurve {
+                level: index as f64,
+                points: line.iter().map(|&v| net.positions()[v as usize]).collect(),
+                normals: line.iter().map(|&v| normals[v as usize]).collect(),
+                closed: false,
+                singular_vertices: Vec::new(),
             })
             .collect()
     }
 
+    /// Each family of `net` measured at `targets_degrees` (in parallel, deterministic).
+    pub fn family_angles(&self, net: &NetMesh, families: [Family; 2], targets_degrees: [f64; 2]) -> [FamilyAngles; 2] {
+        let normals: Vec<Vec3> = net.positions().par_iter().map(|p| self.closest(p).1).collect();
+        [0, 1].map(|k| polyline_family_angles(&Self::curves(net, k, &normals), target_family(families[k], targets_degrees[k]), self.diagonal))
+    }
+
     /// Measures `net` for the families `families` at the targets `targets_degrees`.
     pub fn measure(&self, net: &NetMesh, families: [Family; 2], targets_degrees: [f64; 2]) -> Measures {
-        let family_angles = [0, 1].map(|k| polyline_family_angles(&self.curves(net, k), target_family(families[k], targets_degrees[k]), self.diagonal));
+        let closest: Vec<(Vec3, Vec3, f64)> = net.positions().par_iter().map(|p| self.closest(p)).collect();
+        let normals: Vec<Vec3> = closest.iter().map(|c| c.1).collect();
+        let family_angles = [0, 1].map(|k| polyline_family_angles(&Self::curves(net, k, &normals), target_family(families[k], targets_degrees[k]), self.diagonal));
         let mut deviation = Deviation::default();
         let mut squares = 0.0;
-        for (v, p) in net.positions().iter().enumerate() {
-            let distance = self.closest(p).2;
+        for (v, &(_, _, distance)) in closest.iter().enumerate() {
             squares += distance * distance;
             if distance > deviation.max || v == 0 {
                 deviation.max = distance;

@@ -11,15 +11,14 @@ use super::start::{initialise_auxiliaries, oriented_target};
 use super::strips::net_strips;
 use crate::field::Family;
 use crate::mesh::{TriMesh, Vec3};
-use crate::quality::polyline_family_angles;
 use crate::solver::{LeastSquaresProblem, LevenbergMarquardt};
 use crate::strips::StripPattern;
 use rayon::prelude::*;
 
 /// Optimises a net's vertices so that its rows and columns form the asked families on (near) a
-/// reference surface, optionally with torsion-free nodes: then in two stages, the families alone
-/// until they settle, then with the rows of Eq. 21 (the rulings started from the net's strips,
-/// [`super::node_torsion`]).
+/// reference surface, optionally with torsion-free nodes: then in two stages (unless
+/// [`BaseMeshParams::families_first`] is off), the families alone until they settle, then with
+/// the rows of Eq. 21 (the rulings started from the net's strips, [`super::node_torsion`]).
 ///
 /// Works on a copy of the net scaled to mean segment length 1 (the weights are meant for that
 /// scale); everything handed back is in the caller's units.
@@ -37,6 +36,9 @@ pub struct BaseMeshSolver {
     initial: BaseMeshReport,
     last_report: BaseMeshReport,
     measures: Measures,
+    /// Vertices found past the reference's boundary once: their tangential offset is held from
+    /// then on (released, they would slide out again, and the solve would cycle).
+    held: Vec<bool>,
 }
 
 impl BaseMeshSolver {
@@ -56,15 +58,14 @@ impl BaseMeshSolver {
         let segments: Vec<f64> = (0..2).flat_map(|k| net.segments(k).map(|[a, b]| (net.positions()[b as usize] - net.positions()[a as usize]).norm()).collect::<Vec<_>>()).collect();
         let mean = segments.iter().sum::<f64>() / segments.len().max(1) as f64;
         let scale = if mean > 0.0 && mean.is_finite() { 1.0 / mean } else { 1.0 };
-        let targets_degrees = [0, 1].map(|k| {
-            let family = params.families[k];
-            let curves = reference.curves(net, k);
-            let mirror = target_family(family, 180.0 - family.theta_degrees());
-            oriented_target(family, &polyline_family_angles(&curves, family, reference.diagonal), &polyline_family_angles(&curves, mirror, reference.diagonal))
-        });
+        let as_given = reference.family_angles(net, params.families, params.families.map(|f| f.theta_degrees()));
+        let mirrored = reference.family_angles(net, params.families, params.families.map(|f| 180.0 - f.theta_degrees()));
+        let targets_degrees = [0, 1].map(|k| oriented_target(params.families[k], &as_given[k], &mirrored[k]));
         let scaled = net.with_positions(net.positions().iter().map(|p| p * scale).collect());
         let measures = reference.measure(net, params.families, targets_degrees);
-        let (problem, lm, x) = stage(&reference, scaled, scale, &params, targets_degrees, false, &measures)?;
+        let mut held = vec![false; net.vertex_count()];
+        let torsion_free = params.torsion_free && !params.families_first;
+        let (problem, lm, x) = stage(&reference, scaled, scale, &params, targets_degrees, torsion_free, &measures, &mut held)?;
         let mut report = BaseMeshReport::new(&measures, targets_degrees, params.tolerance_degrees);
         report.energy = energy(&problem, &x);
         Ok(BaseMeshSolver {
@@ -80,6 +81,7 @@ impl BaseMeshSolver {
             initial: report.clone(),
             last_report: report,
             measures,
+            held,
         })
     }
 
@@ -94,7 +96,7 @@ impl BaseMeshSolver {
         let mut energy = self.last_report.energy;
         while ran < max_iterations && !self.converged {
             let scaled = self.scaled_net();
-            self.problem.anchors = anchors(&self.reference, &scaled, self.scale);
+            self.problem.anchors = anchors(&self.reference, &scaled, self.scale, &mut self.held);
             let outcome = self.lm.iterate(&self.problem, &mut self.x)?;
             ran += 1;
             self.iterations += 1;
@@ -104,7 +106,7 @@ impl BaseMeshSolver {
             if settled && self.params.torsion_free && !self.problem.torsion_free {
                 // The families are met: now the nodes, from the strips of the net as it stands.
                 self.measures = self.reference.measure(&self.net(), self.params.families, self.targets_degrees);
-                let (problem, lm, x) = stage(&self.reference, self.scaled_net(), self.scale, &self.params, self.targets_degrees, true, &self.measures)?;
+                let (problem, lm, x) = stage(&self.reference, self.scaled_net(), self.scale, &self.params, self.targets_degrees, true, &self.measures, &mut self.held)?;
                 (self.problem, self.lm, self.x) = (problem, lm, x);
             } else {
                 self.converged = settled;
@@ -115,6 +117,7 @@ impl BaseMeshSolver {
         report.iterations = self.iterations;
         report.step_iterations = ran;
         report.converged = self.converged;
+        report.torsion_free_stage = self.problem.torsion_free;
         report.energy = energy;
         self.last_report = report;
         Ok(self.last_report.clone())
@@ -187,6 +190,8 @@ impl BaseMeshSolver {
 /// A vertex whose offset from its closest reference point leans more than 30° off the normal
 /// there has slid past the reference's boundary (inside, the offset is along the normal).
 const BEYOND_BOUNDARY: f64 = 0.5;
+/// Offsets below this (in mean segment lengths) are rounding: a vertex on the reference.
+const MIN_OFFSET: f64 = 1e-6;
 
 /// The problem, its solver and its start for the scaled `net`: the families alone, or with
 /// torsion-free nodes (rulings started from the strips of `measures`).
@@ -198,9 +203,10 @@ fn stage(
     targets_degrees: [f64; 2],
     torsion_free: bool,
     measures: &Measures,
+    held: &mut [bool],
 ) -> Result<(BaseMeshProblem, LevenbergMarquardt, Vec<f64>), BaseMeshError> {
     let curves = [0, 1].map(|k| CurveRows::new(params.families[k], targets_degrees[k]));
-    let anchors = anchors(reference, &net, scale);
+    let anchors = anchors(reference, &net, scale, held);
     let problem = BaseMeshProblem::new(net, curves, torsion_free, params.weights, anchors.clone());
     let lm = LevenbergMarquardt::new(&problem, params.lm.clone())?;
     let mut x = vec![0.0; problem.variable_count()];
@@ -212,18 +218,25 @@ fn stage(
 }
 
 /// The reference's closest point and normal for every vertex of the scaled `net` (in parallel,
-/// deterministic).
-fn anchors(reference: &Reference, net: &NetMesh, scale: f64) -> Vec<Anchor> {
-    net.positions()
+/// deterministic); vertices past the reference's boundary are marked in `held` for good.
+fn anchors(reference: &Reference, net: &NetMesh, scale: f64, held: &mut [bool]) -> Vec<Anchor> {
+    let mut anchors: Vec<Anchor> = net
+        .positions()
         .par_iter()
         .map(|p| {
             let (point, normal, _) = reference.closest(&(p / scale));
             let point = point * scale;
             let offset = p - point;
             let along = offset.dot(&normal);
-            Anchor { point, normal, beyond_boundary: (offset - normal * along).norm() > BEYOND_BOUNDARY * offset.norm() }
+            let beyond_boundary = offset.norm() > MIN_OFFSET && (offset - normal * along).norm() > BEYOND_BOUNDARY * offset.norm();
+            Anchor { point, normal, beyond_boundary }
         })
-        .collect()
+        .collect();
+    for (anchor, held) in anchors.iter_mut().zip(held.iter_mut()) {
+        *held |= anchor.beyond_boundary;
+        anchor.beyond_boundary = *held;
+    }
+    anchors
 }
 
 /// `E(x)`, the weighted sum of squared residuals.

@@ -58,9 +58,11 @@ mod net;
 mod strip_net;
 mod view;
 mod reshape;
+mod base_mesh;
 mod surfaces;
 mod shading;
 
+pub use base_mesh::*;
 pub use boundary_starts::*;
 pub use curves::*;
 pub use edge_point::*;
@@ -106,5 +108,6 @@ mod tests {
         movable::<LmlGuides>();
         movable::<LmlFabrication>();
         movable::<LmlShading>();
+        movable::<LmlBaseMesh>();
     }
 }

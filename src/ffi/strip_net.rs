@@ -8,12 +8,19 @@ use super::net::LmlNet;
 use super::raw::{copy_out, handle, release, Out};
 use super::status::LmlStatus;
 use super::strips::LmlStrips;
-use crate::net::{strip_net, Node, StripNet};
+use crate::net::{strip_net, Node, QuadNet, StripNet};
 
 /// The quad net and nodes of two strip families (opaque). Create it with `lml_strip_net_new`,
 /// release it with `lml_strip_net_free`.
 pub struct LmlStripNet {
     net: StripNet,
+}
+
+impl LmlStripNet {
+    /// The quad net of crossings (for `lml_base_mesh_from_strip_net`).
+    pub(crate) fn quad_net(&self) -> &QuadNet {
+        &self.net.net
+    }
 }
 
 /// One node of a gridshell: where a strip of the first family crosses one of the second.

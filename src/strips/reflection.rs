@@ -8,11 +8,58 @@
 
 use super::frenet::{principal_normals, unit_edges};
 use crate::mesh::Vec3;
+use nalgebra::Matrix3;
 
 /// Samples of the free angle in `(0, π)` before the local refinement.
-const SAMPLES: usize = 240;
+const SAMPLES: usize = 180;
 /// Golden-section steps of the refinement (the bracket shrinks by 0.618 each).
-const REFINEMENTS: usize = 40;
+const REFINEMENTS: usize = 60;
+
+/// The family's rulings as linear maps of the ruling at the inner vertex `start`: the ruling at
+/// vertex `i` is `M_i d_start` (up to length and sign), because crossing the plane of the quad on
+/// `ê` through `d` with the bisecting plane of normal `n_p` is `(ê × d) × n_p = d (ê·n_p) − ê (d·n_p)`,
+/// linear in `d`. Where the polyline is straight the quad's plane continues (identity), and the
+/// two ends copy their neighbour (their quads stay planar). Each map is scaled to unit norm
+/// (lengths are immaterial).
+fn propagation(points: &[Vec3], start: usize) -> Vec<Matrix3<f64>> {
+    let n = points.len();
+    let edges = unit_edges(points);
+    let normals = principal_normals(points);
+    // The map from the ruling at one end of `edge` to the ruling at `to`.
+    let step = |edge: &Vec3, to: usize| match normals[to] {
+        Some(np) if to > 0 && to + 1 < n => Matrix3::identity() * edge.dot(&np) - edge * np.transpose(),
+        _ => Matrix3::identity(),
+    };
+    let unit = |m: Matrix3<f64>| {
+        let norm = m.norm();
+        if norm > 0.0 { m / norm } else { m }
+    };
+    let mut maps = vec![Matrix3::identity(); n];
+    for i in start..n - 1 {
+        maps[i + 1] = unit(step(&edges[i], i + 1) * maps[i]);
+    }
+    for i in (1..=start).rev() {
+        maps[i - 1] = unit(step(&edges[i - 1], i - 1) * maps[i]);
+    }
+    maps
+}
+
+/// Unit rulings `M_i d` of [`propagation`], each oriented along the one before it; `None` when one
+/// vanishes (a ruling along its segment: the strip would be unbounded).
+fn rulings_of(maps: &[Matrix3<f64>], d: &Vec3, start: usize) -> Option<Vec<Vec3>> {
+    let mut rulings: Vec<Vec3> = maps.iter().map(|m| (m * d).try_normalize(1e-12)).collect::<Option<_>>()?;
+    for i in start + 1..rulings.len() {
+        if rulings[i].dot(&rulings[i - 1]) < 0.0 {
+            rulings[i] = -rulings[i];
+        }
+    }
+    for i in (0..start).rev() {
+        if rulings[i].dot(&rulings[i + 1]) < 0.0 {
+            rulings[i] = -rulings[i];
+        }
+    }
+    Some(rulings)
+}
 
 /// The rulings of the member of the family whose ruling at the inner vertex `start` is `ruling`
 /// (a direction in `R_start`), one per vertex: inner vertices by reflection (the plane of the
@@ -20,35 +67,15 @@ const REFINEMENTS: usize = 40;
 /// plane continues), the two ends copying their neighbour (their quads stay planar). `None` when
 /// a ruling falls along its segment (the strip would be unbounded).
 pub fn reflected_rulings(points: &[Vec3], start: usize, ruling: Vec3) -> Option<Vec<Vec3>> {
-    let n = points.len();
-    if n < 3 || start == 0 || start + 1 >= n {
+    if points.len() < 3 || start == 0 || start + 1 >= points.len() {
         return None;
     }
-    let edges = unit_edges(points);
-    let normals = principal_normals(points);
-    let mut rulings = vec![Vec3::zeros(); n];
-    rulings[start] = ruling.try_normalize(0.0)?;
-    // Crosses the plane of the quad on `edge` (through `from`) with the bisecting plane at `to`.
-    let next = |from: &Vec3, edge: &Vec3, to: usize| -> Option<Vec3> {
-        let quad = edge.cross(from).try_normalize(1e-12)?;
-        let d = match normals[to] {
-            Some(np) if to > 0 && to + 1 < n => quad.cross(&np).try_normalize(1e-12)?,
-            _ => *from,
-        };
-        Some(if d.dot(from) < 0.0 { -d } else { d })
-    };
-    for i in start..n - 1 {
-        rulings[i + 1] = next(&rulings[i], &edges[i], i + 1)?;
-    }
-    for i in (1..=start).rev() {
-        rulings[i - 1] = next(&rulings[i], &edges[i - 1], i - 1)?;
-    }
-    Some(rulings)
+    rulings_of(&propagation(points, start), &ruling, start)
 }
 
 /// The member of the family whose rulings come nearest to `targets` (unit directions as lines,
 /// `None` where there is none), in the least squares of `sin²` of their angles: the free angle
-/// sampled at 0.75° then refined. `None` for fewer than three points, a polyline straight at
+/// sampled at 1° then refined. `None` for fewer than three points, a polyline straight at
 /// every inner vertex, no target, or no member without a ruling along its segment.
 pub fn fitted_rulings(points: &[Vec3], targets: &[Option<Vec3>]) -> Option<Vec<Vec3>> {
     let normals = principal_normals(points);
@@ -59,11 +86,23 @@ pub fn fitted_rulings(points: &[Vec3], targets: &[Option<Vec3>]) -> Option<Vec<V
     let edges = unit_edges(points);
     let tangent = (edges[start - 1] + edges[start]).try_normalize(1e-12)?;
     let across = normals[start]?.cross(&tangent);
-    let member = |phi: f64| reflected_rulings(points, start, tangent * phi.cos() + across * phi.sin());
+    let maps = propagation(points, start);
+    // The member of angle φ has rulings cos φ A_i + sin φ B_i.
+    let (a, b): (Vec<Vec3>, Vec<Vec3>) = maps.iter().map(|m| (m * tangent, m * across)).unzip();
     let misfit = |phi: f64| -> f64 {
-        member(phi).map_or(f64::INFINITY, |rulings| {
-            rulings.iter().zip(targets).filter_map(|(d, t)| t.map(|t| 1.0 - d.dot(&t).powi(2))).sum()
-        })
+        let (sin, cos) = phi.sin_cos();
+        let mut total = 0.0;
+        for ((a, b), t) in a.iter().zip(&b).zip(targets) {
+            let d = a * cos + b * sin;
+            let length = d.norm_squared();
+            if length <= 1e-24 * (a.norm_squared() + b.norm_squared()) {
+                return f64::INFINITY;
+            }
+            if let Some(t) = t {
+                total += 1.0 - d.dot(t).powi(2) / length;
+            }
+        }
+        total
     };
     let step = std::f64::consts::PI / SAMPLES as f64;
     let (best, _) = (1..SAMPLES).map(|s| (s as f64 * step, misfit(s as f64 * step))).fold((f64::NAN, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
@@ -73,15 +112,16 @@ pub fn fitted_rulings(points: &[Vec3], targets: &[Option<Vec3>]) -> Option<Vec<V
     let (mut low, mut high) = (best - step, best + step);
     let ratio = 0.5 * (5f64.sqrt() - 1.0);
     for _ in 0..REFINEMENTS {
-        let (a, b) = (high - ratio * (high - low), low + ratio * (high - low));
-        if misfit(a) < misfit(b) {
-            high = b;
+        let (x, y) = (high - ratio * (high - low), low + ratio * (high - low));
+        if misfit(x) < misfit(y) {
+            high = y;
         } else {
-            low = a;
+            low = x;
         }
     }
     let refined = 0.5 * (low + high);
-    if misfit(refined) <= misfit(best) { member(refined) } else { member(best) }
+    let phi = if misfit(refined) <= misfit(best) { refined } else { best };
+    rulings_of(&maps, &(tangent * phi.cos() + across * phi.sin()), start)
 }
 
 #[cfg(test)]

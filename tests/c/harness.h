@@ -55,6 +55,12 @@ void test_net(const Cylinder *cylinder);
  * every invalid input, stepping, positions and deviations against the distance from the axis. */
 void test_reshape(const Cylinder *cylinder);
 
+/* Base-mesh optimisation (Sec. 3.5) with torsion-free nodes (Sec. 5.2.1) on a finer patch of the
+ * cylinder: the net of +-45 degree helices, perturbed, stepped to convergence: every invalid input,
+ * the vertices back on the cylinder and geodesic, the nodes' ruling angles, the strips of both
+ * families (planar quads, the rulings at the nodes). */
+void test_base_mesh(void);
+
 /* Constant-slope families on the cylinder: every invalid input, the start field and the solve
  * about its axis (helices, straight in the development at the slope), and the boundary of the
  * reachable region about an axis across it (the ruling where the tangent planes have the slope). */

@@ -72,6 +72,12 @@ namespace Lamella.Interop
         protected override bool ReleaseHandle() { NativeMethods.lml_reshape_free(handle); return true; }
     }
 
+    internal sealed class BaseMeshHandle : LamellaHandle
+    {
+        public BaseMeshHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_base_mesh_free(handle); return true; }
+    }
+
     internal sealed class ShadingHandle : LamellaHandle
     {
         public ShadingHandle() { }

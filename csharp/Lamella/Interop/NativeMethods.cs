@@ -129,6 +129,27 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_reshape_load(byte[] bytes, UIntPtr length, out ReshapeHandle reshape);
 
+        // LmlBaseMesh.
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_base_mesh_new(MeshHandle reference, double[] xyz, UIntPtr vertexCount, uint[] polylineVertices,
+            UIntPtr polylineVertexCount, uint[] polylineLengths, UIntPtr rowCount, UIntPtr columnCount, double thetaDegreesRows,
+            double thetaDegreesColumns, uint torsionFree, out BaseMeshHandle baseMesh);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_base_mesh_from_strip_net(StripNetHandle net, MeshHandle reference, double thetaDegreesRows,
+            double thetaDegreesColumns, uint torsionFree, out BaseMeshHandle baseMesh);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_base_mesh_free(IntPtr baseMesh);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_base_mesh_step(BaseMeshHandle baseMesh, uint maxIterations, out BaseMeshReportRecord report);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_base_mesh_report(BaseMeshHandle baseMesh, out BaseMeshReportRecord report);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_base_mesh_initial_report(BaseMeshHandle baseMesh, out BaseMeshReportRecord report);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_base_mesh_positions(BaseMeshHandle baseMesh, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_base_mesh_nodes(BaseMeshHandle baseMesh, [Out] BaseMeshNodeRecord[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_base_mesh_strips(BaseMeshHandle baseMesh, uint k, double width, double toleranceDegrees, out StripsHandle strips);
+
         // LmlShading.
         [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_shading_site_default(out ShadingSite site);
         [DllImport(Library, CallingConvention = Cdecl)]

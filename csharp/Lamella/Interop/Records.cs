@@ -132,6 +132,50 @@ namespace Lamella.Interop
         public double EnergyEdge;
     }
 
+    /// <summary>
+    /// <c>LmlBaseMeshReport</c>: the state of a base-mesh optimisation (lengths in the net's units, angles in degrees;
+    /// index 0 is the rows, 1 the columns). The binding hands it out as <see cref="BaseMeshReport"/>.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct BaseMeshReportRecord
+    {
+        public ulong Iterations;
+        public ulong Converged;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public double[] TargetDegrees;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public double[] AngleErrorRmsDegrees;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public double[] AngleErrorMaxDegrees;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public ulong[] MeasuredVertices;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public ulong[] StraightVertices;
+        public double MaxDeviation;
+        public double RmsDeviation;
+        public double MaxDeviationPercent;
+        public ulong NodeCount;
+        public double NodeRulingAngleMaxDegrees;
+        public double NodeRulingAngleRmsDegrees;
+        public ulong FamiliesMet;
+        public ulong TorsionFree;
+        public double Energy;
+    }
+
+    /// <summary>
+    /// <c>LmlBaseMeshNode</c>: a node of an optimised net with the angle between its two strips' rulings. The binding
+    /// hands it out as <see cref="BaseMeshNode"/>.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct BaseMeshNodeRecord
+    {
+        public uint Vertex;
+        public uint Defined;
+        public double RulingAngleDegrees;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 3)]
+        public double[] Axis;
+    }
+
     /// <summary><c>LmlShadingReport</c>: the state of a shading optimisation after a step. The binding hands it out as <see cref="ShadingReport"/>.</summary>
     [StructLayout(LayoutKind.Sequential)]
     internal struct ShadingReportRecord

@@ -95,7 +95,9 @@ pub fn run(args: &OptimiseArgs) -> CliResult<()> {
             missed.push(format!("family {} misses {:.1}° by up to {:.2}°{at}, {} straight vertices", labels[k], report.targets_degrees[k], family.max_error_degrees, family.straight));
         }
     }
-    if args.torsion_free && !report.torsion_free {
+    if args.torsion_free && !report.torsion_free_stage {
+        missed.push("the families did not settle, so the torsion-free nodes were not started".into());
+    } else if args.torsion_free && !report.torsion_free {
         missed.push(format!("nodes are not torsion-free: rulings up to {:.2}° apart (at vertex {}; {TORSION_FREE_DEGREES}° allowed)", report.node_torsion.max_degrees, report.node_torsion.worst_vertex.map_or("-".into(), |v| v.to_string())));
     }
     if missed.is_empty() {

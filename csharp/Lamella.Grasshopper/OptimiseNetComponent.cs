@@ -1,0 +1,189 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using Grasshopper;
+using Grasshopper.Kernel;
+using Grasshopper.Kernel.Data;
+using Lamella.Conversion;
+using Lamella.Hosting;
+using Rhino.Geometry;
+
+namespace Lamella.Grasshopper
+{
+    /// <summary>
+    /// Optimise Net: moves the vertices of a quad net (Strip Net's Net, or any quad mesh whose quads form rows and
+    /// columns) near a reference surface until its rows and columns are the asked families exactly (paper Sec. 3.5),
+    /// optionally with torsion-free nodes (Sec. 5.2.1, Eq. 21: the strips of a node's row and column share its ruling);
+    /// then every polyline carries a developable strip of planar quads. One-shot: solves when Solve is true (no live mode).
+    /// </summary>
+    public class OptimiseNetComponent : LamellaComponent
+    {
+        public OptimiseNetComponent()
+            : base("Optimise Net", "OptNet",
+                "Moves a net's vertices near the reference surface until its rows and columns are exact families of angle θ (paper Sec. 3.5: 0° and 180° asymptotic curves, 90° geodesics, others pseudo-geodesics) and, with Torsion-free, until the strips of every node's row and column share its ruling (Sec. 5.2.1). Then each row and column carries a developable strip of planar quads. Solves when Solve is true.",
+                "StripField")
+        {
+        }
+
+        public override Guid ComponentGuid => new Guid("b12cb7c8-99fb-454c-b55e-dbf79979dcd4");
+        public override GH_Exposure Exposure => GH_Exposure.secondary;
+
+        protected override void RegisterInputParams(GH_InputParamManager pManager)
+        {
+            pManager.AddMeshParameter("Reference", "M", "The surface the net should stay on (the mesh Strip Net was given, cleaned the same way).", GH_ParamAccess.item);
+            pManager.AddMeshParameter("Net", "N", "The net: a quad mesh whose quads form rows and columns, such as Strip Net's Net. Opposite sides of a quad belong to one family; the first side of the first quad (corner 0 to 1) runs along a row. Vertices at one position are welded.", GH_ParamAccess.item);
+            pManager.AddNumberParameter("Theta Rows", "θR", "Angle of the rows' family, in degrees, in [0, 180]: 0 and 180 asymptotic curves, 90 geodesics. Default 60.", GH_ParamAccess.item, 60.0);
+            pManager.AddNumberParameter("Theta Columns", "θC", "Angle of the columns' family, as Theta Rows. Default 60.", GH_ParamAccess.item, 60.0);
+            pManager.AddBooleanParameter("Torsion-free", "TF", "True also asks for torsion-free nodes: the strips of a node's row and column share one ruling there (Sec. 5.2.1, Eq. 21). Default false.", GH_ParamAccess.item, false);
+            pManager.AddIntegerParameter("Max Iterations", "I", "The most solver iterations (a count, ≥ 1). Default 300.", GH_ParamAccess.item, 300);
+            pManager.AddNumberParameter("Width", "W", "Width of each flat strip, in document units, > 0. Default: a round number near 2 % of the net's extent (named in a remark).", GH_ParamAccess.item);
+            pManager[6].Optional = true;
+            pManager.AddBooleanParameter("Solve", "Sv", "True solves within this solution. Default false.", GH_ParamAccess.item, false);
+        }
+
+        protected override void RegisterOutputParams(GH_OutputParamManager pManager)
+        {
+            pManager.AddMeshParameter("Net", "N", "The optimised net: the input's quads on the moved vertices (welded).", GH_ParamAccess.item);
+            pManager.AddCurveParameter("Polylines", "P", "The net's polylines: branch {0} the rows, {1} the columns.", GH_ParamAccess.tree);
+            pManager.AddMeshParameter("Strip Meshes", "S", "One planar-quad mesh per row and column that carries a strip: branch {0} the rows, {1} the columns.", GH_ParamAccess.tree);
+            pManager.AddPointParameter("Nodes", "X", "Every vertex inside a row and a column.", GH_ParamAccess.list);
+            pManager.AddNumberParameter("Node Angles", "A", "Per node, the angle in degrees between the rulings of its row's and its column's strips (0: torsion-free); NaN where a polyline through it carries no strip.", GH_ParamAccess.list);
+            pManager.AddVectorParameter("Node Axes", "NA", "Per node, the unit node axis (the mean of the two rulings); zero where undefined.", GH_ParamAccess.list);
+            pManager.AddTextParameter("Report", "R", "Iterations, each family's angle error, the deviation from the reference, the node ruling angles, each family's strip verdict.", GH_ParamAccess.item);
+        }
+
+        /// <summary>The input mesh's faces as four corners each (a triangle repeats its third corner), indices into its vertices.</summary>
+        private static int[] FaceCorners(Mesh mesh)
+        {
+            var corners = new int[4 * mesh.Faces.Count];
+            for (int f = 0; f < mesh.Faces.Count; f++)
+            {
+                MeshFace face = mesh.Faces[f];
+                corners[4 * f] = face.A;
+                corners[4 * f + 1] = face.B;
+                corners[4 * f + 2] = face.C;
+                corners[4 * f + 3] = face.D;
+            }
+            return corners;
+        }
+
+        /// <summary>The points of each polyline of <paramref name="lines"/> at <paramref name="xyz"/>, packed.</summary>
+        private static Packed PolylinePoints(double[] xyz, int[][] lines)
+        {
+            var points = new List<double[]>(lines.Length);
+            foreach (int[] line in lines)
+            {
+                var item = new double[3 * line.Length];
+                for (int i = 0; i < line.Length; i++) Array.Copy(xyz, 3 * line[i], item, 3 * i, 3);
+                points.Add(item);
+            }
+            return Packing.Pack(points, 3);
+        }
+
+        protected override void Solve(IGH_DataAccess DA)
+        {
+            Mesh input = null, netInput = null;
+            if (!DA.GetData(0, ref input) || input == null || !DA.GetData(1, ref netInput) || netInput == null) return;
+            double[] thetas = { 60.0, 60.0 };
+            double width = double.NaN;
+            int maxIterations = 300;
+            bool torsionFree = false, solveNow = false;
+            DA.GetData(2, ref thetas[0]);
+            DA.GetData(3, ref thetas[1]);
+            DA.GetData(4, ref torsionFree);
+            DA.GetData(5, ref maxIterations);
+            bool widthGiven = DA.GetData(6, ref width);
+            DA.GetData(7, ref solveNow);
+            if (maxIterations < 1)
+            {
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Error, "Max Iterations must be at least 1");
+                return;
+            }
+            if (!solveNow)
+            {
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, "set Solve to true to optimise the net");
+                return;
+            }
+            CleanMesh clean = CleanMeshInput(input);
+            // The net's own vertices, welded where they coincide exactly; its quads on them.
+            int[] corners = FaceCorners(netInput);
+            CleanMesh welded = CleanMesh.FromFaces(RhinoConversion.PointsToArray(netInput.Vertices.ToPoint3dArray()), corners, 0);
+            for (int k = 0; k < corners.Length; k++)
+            {
+                if (welded.VertexMap[corners[k]] < 0)
+                {
+                    AddRuntimeMessage(GH_RuntimeMessageLevel.Error, "net face " + k / 4 + " has no area: a net has quads only");
+                    return;
+                }
+                corners[k] = welded.VertexMap[corners[k]];
+            }
+            int[][][] polylines = NetPolylines.FromQuads(corners, welded.VertexCount);
+            if (!widthGiven)
+            {
+                width = StripDefaults.Width(welded.Xyz);
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, string.Format(CultureInfo.InvariantCulture,
+                    "Width not set: {0:G6} ({1}; about {2:0.#} % of the net's extent)", width,
+                    RhinoConversion.DocumentUnits() ?? "document units", 100 * StripDefaults.WidthFraction));
+            }
+
+            BaseMeshReport report;
+            double[] xyz;
+            BaseMeshNode[] nodes;
+            var meshes = new DataTree<object>();
+            var verdicts = new List<string>();
+            using (LamellaMesh reference = LamellaMesh.FromArrays(clean.Xyz, clean.Triangles))
+            using (var solver = new BaseMeshSolver(reference, welded.Xyz, polylines[0], polylines[1], thetas[0], thetas[1], torsionFree))
+            {
+                report = solver.Report;
+                while (report.Iterations < maxIterations && !report.IsConverged)
+                {
+                    if (GH_Document.IsEscapeKeyDown()) break;
+                    report = solver.Step((int)Math.Min(10, maxIterations - report.Iterations));
+                }
+                xyz = solver.Positions();
+                nodes = solver.Nodes();
+                for (int k = 0; k < 2; k++)
+                {
+                    using (Strips strips = solver.BuildStrips(k, width))
+                    {
+                        Verdict verdict = strips.Verdict;
+                        string family = k == 0 ? "rows" : "columns";
+                        // Still output: the designer sees where the strips miss θ.
+                        if (!verdict.IsAcceptable) AddRuntimeMessage(GH_RuntimeMessageLevel.Error, family + ": " + verdict.Message);
+                        verdicts.Add(family + ": " + verdict);
+                        meshes.AddRange(RhinoConversion.QuadMeshes(StripArrays.Split(strips.Vertices(), 3, strips.Quads(), strips.VertexOffsets(), strips.QuadOffsets())), new GH_Path(k));
+                    }
+                }
+            }
+            if (!report.IsConverged)
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, string.Format(CultureInfo.InvariantCulture, "not converged after {0} iterations", report.Iterations));
+            if (!report.FamiliesMet)
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, string.Format(CultureInfo.InvariantCulture,
+                    "the families are not met: rows up to {0:0.##}°, columns up to {1:0.##}° off θ (the library accepts 1°)", report.AngleErrorMaxDegrees[0], report.AngleErrorMaxDegrees[1]));
+            if (torsionFree && !report.IsTorsionFree)
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, string.Format(CultureInfo.InvariantCulture,
+                    "the nodes are not torsion-free: rulings up to {0:0.##}° apart (the library accepts 0.5°; see Node Angles)", report.NodeRulingAngleMaxDegrees));
+
+            var curves = new DataTree<object>();
+            var points = new List<Point3d>(nodes.Length);
+            var angles = new List<double>(nodes.Length);
+            var axes = new List<Vector3d>(nodes.Length);
+            for (int k = 0; k < 2; k++) curves.AddRange(RhinoConversion.Polylines(PolylinePoints(xyz, polylines[k])), new GH_Path(k));
+            foreach (BaseMeshNode node in nodes)
+            {
+                points.Add(RhinoConversion.Point(xyz, node.Vertex));
+                angles.Add(node.RulingAngleDegrees ?? double.NaN);
+                axes.Add(node.Axis == null ? new Vector3d(0, 0, 0) : new Vector3d(node.Axis[0], node.Axis[1], node.Axis[2]));
+            }
+            Message = string.Format(CultureInfo.InvariantCulture, "θ error {0:0.##}° · nodes {1:0.##}°",
+                Math.Max(report.AngleErrorMaxDegrees[0], report.AngleErrorMaxDegrees[1]), report.NodeRulingAngleMaxDegrees);
+            DA.SetData(0, RhinoConversion.QuadMesh(xyz, corners));
+            DA.SetDataTree(1, curves);
+            DA.SetDataTree(2, meshes);
+            DA.SetDataList(3, points);
+            DA.SetDataList(4, angles);
+            DA.SetDataList(5, axes);
+            DA.SetData(6, report.Describe() + "\n" + string.Join("\n", verdicts));
+        }
+    }
+}

@@ -1,0 +1,282 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using Lamella.Conversion;
+using NUnit.Framework;
+
+namespace Lamella.Tests
+{
+    /// <summary>
+    /// Base-mesh optimisation through the binding (paper Sec. 3.5) with torsion-free nodes (Sec. 5.2.1, Eq. 21): the net
+    /// of ±45° helices on the cylinder, perturbed and optimised back, judged from outside (on the cylinder, geodesic
+    /// against its exact normal, node ruling angles, planar strips sharing the rulings at the nodes); the rows and columns
+    /// of a quad mesh; a strip net's quad net as the start; invalid arguments.
+    /// </summary>
+    [TestFixture]
+    public class BaseMeshTests
+    {
+        /// <summary>The ±45° helices on the cylinder: vertex (i, j) at s = 1.5 + (i + j) h/2 around the axis, z = 7.5 + (j − i) h/2.</summary>
+        private sealed class HelixNet
+        {
+            private const int Lines = 40;
+            private const double Step = 1.2;
+
+            public readonly double[] Points;
+            /// <summary>Rows (constant i, increasing j) and columns (constant j, increasing i).</summary>
+            public readonly int[][] Rows, Columns;
+            /// <summary>(i, j), (i, j + 1), (i + 1, j + 1), (i + 1, j) wherever all four exist.</summary>
+            public readonly int[] Quads;
+
+            /// <summary>The net with each coordinate moved by up to <paramref name="noise"/>.</summary>
+            public HelixNet(double noise)
+            {
+                var index = new int[Lines, Lines];
+                var points = new List<double>();
+                var random = new Random(5);
+                for (int i = 0; i < Lines; i++)
+                {
+                    for (int j = 0; j < Lines; j++)
+                    {
+                        double s = 1.5 + (i + j) * Step / 2, z = 7.5 + (j - i) * Step / 2;
+                        index[i, j] = -1;
+                        if (s > 24.5 || z < 0.8 || z > Cylinder.Height - 0.8) continue;
+                        index[i, j] = points.Count / 3;
+                        points.Add(Cylinder.Radius * Math.Cos(s / Cylinder.Radius) + noise * (2 * random.NextDouble() - 1));
+                        points.Add(Cylinder.Radius * Math.Sin(s / Cylinder.Radius) + noise * (2 * random.NextDouble() - 1));
+                        points.Add(z + noise * (2 * random.NextDouble() - 1));
+                    }
+                }
+                Points = points.ToArray();
+                Rows = Runs((a, b) => index[a, b]);
+                Columns = Runs((a, b) => index[b, a]);
+                var quads = new List<int>();
+                for (int i = 0; i + 1 < Lines; i++)
+                {
+                    for (int j = 0; j + 1 < Lines; j++)
+                    {
+                        int[] quad = { index[i, j], index[i, j + 1], index[i + 1, j + 1], index[i + 1, j] };
+                        if (quad.All(v => v >= 0)) quads.AddRange(quad);
+                    }
+                }
+                Quads = quads.ToArray();
+            }
+
+            /// <summary>The vertices of each grid line in order (consecutive: the patch is convex), lines of two or more.</summary>
+            private static int[][] Runs(Func<int, int, int> vertex)
+            {
+                var lines = new List<int[]>();
+                for (int a = 0; a < Lines; a++)
+                {
+                    int[] line = Enumerable.Range(0, Lines).Select(b => vertex(a, b)).Where(v => v >= 0).ToArray();
+                    if (line.Length >= 2) lines.Add(line);
+                }
+                return lines.ToArray();
+            }
+        }
+
+        /// <summary>The largest |angle − 90°| between a polyline's discrete binormal and the cylinder's exact normal at its inner vertices.</summary>
+        private static double WorstGeodesicError(double[] xyz, int[][] lines)
+        {
+            double worst = 0;
+            foreach (int[] line in lines)
+            {
+                for (int a = 1; a + 1 < line.Length; a++)
+                {
+                    worst = Math.Max(worst, Math.Abs(Cylinder.BinormalAngle(Vec.At(xyz, line[a - 1]), Vec.At(xyz, line[a]), Vec.At(xyz, line[a + 1])) - 90));
+                }
+            }
+            return worst;
+        }
+
+        /// <summary>The angle in degrees between two directions as lines.</summary>
+        private static double LineAngle(double[] a, double[] b) => Vec.Degrees(Math.Abs(Vec.Dot(a, b)) / (Vec.Norm(a) * Vec.Norm(b)));
+
+        [Test]
+        public void APerturbedNetOfHelicesIsRestoredToATorsionFreeGeodesicNet()
+        {
+            // A reference cell about half the net's spacing (on cells as wide as the net's, its facets hold the nodes off torsion-free).
+            var cylinder = new Cylinder(72, 40, 7);
+            var net = new HelixNet(0.02);
+            using (var reference = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            using (var solver = new BaseMeshSolver(reference, net.Points, net.Rows, net.Columns, 90.0, 90.0, true))
+            {
+                BaseMeshReport initial = solver.InitialReport, report = solver.Report;
+                Assert.AreEqual(0, initial.Iterations);
+                CollectionAssert.AreEqual(new[] { 90.0, 90.0 }, initial.TargetDegrees);
+                Assert.IsFalse(initial.IsTorsionFree);
+                Assert.Greater(initial.NodeRulingAngleMaxDegrees, 10.0);
+                while (report.Iterations < 300 && !report.IsConverged) report = solver.Step(10);
+                Assert.IsTrue(report.IsConverged, report.Describe());
+                Assert.IsTrue(report.FamiliesMet && report.IsTorsionFree, report.Describe());
+                Assert.LessOrEqual(report.NodeRulingAngleMaxDegrees, 0.5);
+                Assert.AreEqual(report.Iterations, solver.Step(10).Iterations, "a converged session does not step");
+
+                // From outside: on the cylinder (the reference lies between it and its chords: sagitta of the widest cell,
+                // 10 (1 − cos(0.75 · 150°/72)) = 0.0037), geodesic against its exact normal.
+                double[] xyz = solver.Positions();
+                Assert.AreEqual(net.Points.Length, xyz.Length);
+                for (int v = 0; v < xyz.Length / 3; v++)
+                {
+                    Assert.AreEqual(Cylinder.Radius, Math.Sqrt(xyz[3 * v] * xyz[3 * v] + xyz[3 * v + 1] * xyz[3 * v + 1]), 0.0037 + 0.002);
+                }
+                Assert.LessOrEqual(WorstGeodesicError(xyz, net.Rows), 1.0);
+                Assert.LessOrEqual(WorstGeodesicError(xyz, net.Columns), 1.0);
+
+                // The nodes: every vertex inside a row and a column; the report's maximum is theirs.
+                BaseMeshNode[] nodes = solver.Nodes();
+                BaseMeshNode[] defined = nodes.Where(n => n.RulingAngleDegrees.HasValue).ToArray();
+                Assert.AreEqual(report.NodeCount, defined.Length);
+                Assert.AreEqual(report.NodeRulingAngleMaxDegrees, defined.Max(n => n.RulingAngleDegrees.Value));
+                foreach (BaseMeshNode node in defined) Assert.AreEqual(1.0, Vec.Norm(node.Axis), 1e-9);
+
+                // The strips: acceptable, planar quads, and at every node the row's and the column's rulings at the
+                // node's reported angle.
+                var rulingAt = new Dictionary<int, double[]>[] { new Dictionary<int, double[]>(), new Dictionary<int, double[]>() };
+                for (int k = 0; k < 2; k++)
+                {
+                    int[][] lines = k == 0 ? net.Rows : net.Columns;
+                    using (Strips strips = solver.BuildStrips(k, 0.3, 1.0))
+                    {
+                        Assert.IsTrue(strips.Verdict.IsAcceptable, strips.Verdict.ToString());
+                        double[] vertices = strips.Vertices(), rulings = strips.Rulings();
+                        int[] quads = strips.Quads(), offsets = strips.PointOffsets();
+                        for (int q = 0; q < quads.Length; q += 4)
+                        {
+                            double[] a = Vec.At(vertices, quads[q]);
+                            double[] u = Vec.Sub(Vec.At(vertices, quads[q + 1]), a), w = Vec.Sub(Vec.At(vertices, quads[q + 2]), a), x = Vec.Sub(Vec.At(vertices, quads[q + 3]), a);
+                            Assert.Less(Math.Abs(Vec.Dot(u, Vec.Cross(w, x))) / (Vec.Norm(u) * Vec.Norm(w) * Vec.Norm(x)), 1e-9, "a planar quad");
+                        }
+                        StripMetrics[] metrics = strips.Metrics();
+                        for (int s = 0; s < metrics.Length; s++)
+                        {
+                            int[] line = lines[metrics[s].Curve];
+                            for (int i = 0; i < line.Length; i++) rulingAt[k][line[i]] = Vec.At(rulings, offsets[s] + i);
+                        }
+                    }
+                }
+                foreach (BaseMeshNode node in defined)
+                {
+                    Assert.AreEqual(node.RulingAngleDegrees.Value, LineAngle(rulingAt[0][node.Vertex], rulingAt[1][node.Vertex]), 1e-6);
+                }
+            }
+        }
+
+        [Test]
+        public void TheQuadsOfANetGiveItsRowsAndColumns()
+        {
+            // A grid's quads start along its x rows: the rows are its rows, each along increasing x.
+            var grid = new Grid(4, 3, 1.0, 0.0, 0.0);
+            int[][][] lines = NetPolylines.FromQuads(grid.Quads, grid.VertexCount);
+            Assert.AreEqual(4, lines[0].Length);
+            CollectionAssert.AreEqual(new[] { 5, 6, 7, 8, 9 }, lines[0][1]);
+            Assert.AreEqual(5, lines[1].Length);
+            CollectionAssert.AreEqual(new[] { 2, 7, 12, 17 }, lines[1][2]);
+            // Where each quad starts does not matter once the first quad is fixed.
+            int[] turned = (int[])grid.Quads.Clone();
+            for (int q = 4; q < turned.Length; q += 8)
+            {
+                int first = turned[q];
+                Array.Copy(turned, q + 1, turned, q, 3);
+                turned[q + 3] = first;
+            }
+            int[][][] again = NetPolylines.FromQuads(turned, grid.VertexCount);
+            CollectionAssert.AreEqual(lines[0], again[0]);
+            CollectionAssert.AreEqual(lines[1], again[1]);
+            // The helix net's quads give back its rows and columns.
+            var net = new HelixNet(0.0);
+            int[][][] helices = NetPolylines.FromQuads(net.Quads, net.Points.Length / 3);
+            CollectionAssert.AreEquivalent(net.Rows.Where(r => r.Length > 2).Select(r => string.Join(",", r)), helices[0].Where(r => r.Length > 2).Select(r => string.Join(",", r)));
+            CollectionAssert.AreEquivalent(net.Columns.Where(c => c.Length > 2).Select(c => string.Join(",", c)), helices[1].Where(c => c.Length > 2).Select(c => string.Join(",", c)));
+
+            var error = Assert.Throws<ArgumentException>(() => NetPolylines.FromQuads(new[] { 0, 1, 2, 2 }, 3));
+            StringAssert.Contains("quad 0 repeats vertex 2", error.Message);
+            error = Assert.Throws<ArgumentException>(() => NetPolylines.FromQuads(new[] { 0, 1, 2, 7 }, 4));
+            StringAssert.Contains("refers to vertex 7", error.Message);
+            // A ring of quads: its rows close.
+            error = Assert.Throws<ArgumentException>(() => NetPolylines.FromQuads(new[] { 0, 1, 4, 3, 1, 2, 5, 4, 2, 0, 3, 5 }, 6));
+            StringAssert.Contains("closes", error.Message);
+            // Three quads around an inner vertex: no rows and columns.
+            error = Assert.Throws<ArgumentException>(() => NetPolylines.FromQuads(new[] { 0, 1, 2, 3, 0, 3, 4, 5, 0, 5, 6, 1 }, 7));
+            StringAssert.Contains("do not form a net", error.Message);
+        }
+
+        [Test]
+        public void AStripNetStartsAnOptimisationFromItsQuadNet()
+        {
+            // The geodesic net of a cylinder's circles and rulings, as in NetTests.
+            var cylinder = new Cylinder(16, 10, 11);
+            int n = cylinder.VertexCount;
+            var first = new double[n];
+            var second = new double[n];
+            for (int v = 0; v < n; v++)
+            {
+                double arc = Cylinder.Radius * Math.Atan2(cylinder.Xyz[3 * v + 1], cylinder.Xyz[3 * v]);
+                first[v] = cylinder.Xyz[3 * v + 2] + 0.18 * arc;
+                second[v] = arc - 0.18 * cylinder.Xyz[3 * v + 2];
+            }
+            var parameters = StripParams.Default(90.0, 0.3);
+            using (var mesh = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            using (var net = new NetSolver(mesh, 90.0, 90.0, first, second, 30.0, 90.0))
+            {
+                for (int k = 0; k < 20 && !net.Step(10).IsConverged; k++) { }
+                using (LevelCurves circles = LevelCurves.OfNet(net, 0, 6, 0.8), rulings = LevelCurves.OfNet(net, 1, 6, 0.8))
+                using (Strips a = Strips.Build(circles, parameters), b = Strips.Build(rulings, parameters))
+                using (var grid = new StripNet(net, a, b))
+                using (var solver = new BaseMeshSolver(grid, mesh, 90.0, 90.0, false))
+                {
+                    double[] before = grid.Vertices(), start = solver.Positions();
+                    Assert.AreEqual(before.Length, start.Length);
+                    for (int i = 0; i < before.Length; i++) Assert.AreEqual(before[i], start[i], 1e-9);
+                    // Circles and rulings are geodesics already, and their 6 x 6 crossings have 4 x 4 inner nodes.
+                    BaseMeshReport report = solver.InitialReport;
+                    Assert.IsTrue(report.FamiliesMet, report.Describe());
+                    Assert.AreEqual(16, report.NodeCount);
+                    report = solver.Step(10);
+                    Assert.AreEqual(10, report.Iterations);
+                    Assert.IsTrue(report.FamiliesMet, report.Describe());
+                    // Still on the cylinder (within the reference's sagitta, 0.075); fairness may slide the vertices
+                    // along their polylines, evening out the spacing of the levels.
+                    double[] after = solver.Positions();
+                    for (int v = 0; v < after.Length / 3; v++)
+                    {
+                        Assert.AreEqual(Cylinder.Radius, Math.Sqrt(after[3 * v] * after[3 * v] + after[3 * v + 1] * after[3 * v + 1]), 0.08);
+                    }
+                    var error = Assert.Throws<LamellaException>(() => new BaseMeshSolver(grid, mesh, 90.0, -1.0, false));
+                    StringAssert.Contains("theta_degrees_columns", error.Message);
+                }
+            }
+        }
+
+        [Test]
+        public void InvalidArgumentsAreRefusedByName()
+        {
+            var cylinder = new Cylinder(8, 6, 3);
+            var net = new HelixNet(0.0);
+            using (var reference = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            {
+                var error = Assert.Throws<LamellaException>(() => new BaseMeshSolver(reference, net.Points, net.Rows, net.Columns, 200.0, 90.0, true));
+                Assert.AreEqual(Status.InvalidArgument, error.Status);
+                StringAssert.Contains("theta_degrees_rows", error.NativeMessage);
+                int[][] rows = net.Rows.Select(r => (int[])r.Clone()).ToArray();
+                rows[1][1] = 100000;
+                error = Assert.Throws<LamellaException>(() => new BaseMeshSolver(reference, net.Points, rows, net.Columns, 90.0, 90.0, true));
+                StringAssert.Contains("row 1 refers to vertex 100000", error.NativeMessage);
+                double[] points = (double[])net.Points.Clone();
+                points[3 * 3 + 2] = double.NaN;
+                error = Assert.Throws<LamellaException>(() => new BaseMeshSolver(reference, points, net.Rows, net.Columns, 90.0, 90.0, true));
+                StringAssert.Contains("vertex 3 has a non-finite coordinate", error.NativeMessage);
+                rows[1][1] = -1;
+                Assert.Throws<ArgumentOutOfRangeException>(() => new BaseMeshSolver(reference, net.Points, rows, net.Columns, 90.0, 90.0, true));
+                Assert.Throws<ArgumentNullException>(() => new BaseMeshSolver(reference, net.Points, new int[][] { null }, net.Columns, 90.0, 90.0, true));
+                Assert.Throws<ArgumentException>(() => new BaseMeshSolver(reference, new double[4], net.Rows, net.Columns, 90.0, 90.0, true));
+                using (var solver = new BaseMeshSolver(reference, net.Points, net.Rows, net.Columns, 90.0, 90.0, false))
+                {
+                    Assert.Throws<ArgumentOutOfRangeException>(() => solver.Step(-1));
+                    Assert.Throws<ArgumentOutOfRangeException>(() => solver.BuildStrips(2, 0.3));
+                    error = Assert.Throws<LamellaException>(() => solver.BuildStrips(0, -1.0));
+                    StringAssert.Contains("width", error.NativeMessage);
+                }
+            }
+        }
+    }
+}

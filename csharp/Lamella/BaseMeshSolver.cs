@@ -1,0 +1,262 @@
+using System;
+using System.Globalization;
+using Lamella.Interop;
+
+namespace Lamella
+{
+    /// <summary>
+    /// The state of a <see cref="BaseMeshSolver"/> (<c>LmlBaseMeshReport</c>), measured from outside: each family's angle
+    /// at the net's own vertices against the reference's smooth normal, the distance from the reference, the ruling angle
+    /// at the nodes. Lengths in the net's units, angles in degrees; index 0 is the rows, 1 the columns.
+    /// </summary>
+    public sealed class BaseMeshReport
+    {
+        internal BaseMeshReport(BaseMeshReportRecord r)
+        {
+            Iterations = checked((long)r.Iterations);
+            IsConverged = r.Converged != 0;
+            TargetDegrees = (double[])r.TargetDegrees.Clone();
+            AngleErrorRmsDegrees = (double[])r.AngleErrorRmsDegrees.Clone();
+            AngleErrorMaxDegrees = (double[])r.AngleErrorMaxDegrees.Clone();
+            MeasuredVertices = new[] { checked((long)r.MeasuredVertices[0]), checked((long)r.MeasuredVertices[1]) };
+            StraightVertices = new[] { checked((long)r.StraightVertices[0]), checked((long)r.StraightVertices[1]) };
+            MaxDeviation = r.MaxDeviation;
+            RmsDeviation = r.RmsDeviation;
+            MaxDeviationPercent = r.MaxDeviationPercent;
+            NodeCount = checked((long)r.NodeCount);
+            NodeRulingAngleMaxDegrees = r.NodeRulingAngleMaxDegrees;
+            NodeRulingAngleRmsDegrees = r.NodeRulingAngleRmsDegrees;
+            FamiliesMet = r.FamiliesMet != 0;
+            IsTorsionFree = r.TorsionFree != 0;
+            Energy = r.Energy;
+        }
+
+        /// <summary>Iterations run since the session was created.</summary>
+        public long Iterations { get; }
+        /// <summary>True when converged (further steps do nothing).</summary>
+        public bool IsConverged { get; }
+        /// <summary>Each family's target along its polylines' direction: θ, or 180° − θ for a pseudo-geodesic family whose polylines run the other way.</summary>
+        public double[] TargetDegrees { get; }
+        /// <summary>RMS of each family's |θ_measured − target| over its measured vertices.</summary>
+        public double[] AngleErrorRmsDegrees { get; }
+        /// <summary>Largest angle error of each family.</summary>
+        public double[] AngleErrorMaxDegrees { get; }
+        /// <summary>Inner vertices of each family where the angle was measured.</summary>
+        public long[] MeasuredVertices { get; }
+        /// <summary>Inner vertices of each family where the polyline is straight (a miss for a pseudo-geodesic family).</summary>
+        public long[] StraightVertices { get; }
+        /// <summary>Largest distance of a vertex from the reference.</summary>
+        public double MaxDeviation { get; }
+        /// <summary>RMS distance of the vertices from the reference.</summary>
+        public double RmsDeviation { get; }
+        /// <summary><see cref="MaxDeviation"/> in % of the reference's bounding-box diagonal.</summary>
+        public double MaxDeviationPercent { get; }
+        /// <summary>Nodes (vertices inside a row and a column) whose two strips both exist.</summary>
+        public long NodeCount { get; }
+        /// <summary>Largest angle between the two strips' rulings at a node: 0 where every node is torsion-free (Sec. 5.2.1).</summary>
+        public double NodeRulingAngleMaxDegrees { get; }
+        /// <summary>RMS of the nodes' ruling angles.</summary>
+        public double NodeRulingAngleRmsDegrees { get; }
+        /// <summary>True when every measured vertex of both families is within 1° of its target (and no pseudo-geodesic family is straight anywhere).</summary>
+        public bool FamiliesMet { get; }
+        /// <summary>True when every node's ruling angle is at most 0.5°.</summary>
+        public bool IsTorsionFree { get; }
+        /// <summary>The weighted energy being minimised (on the net scaled to mean segment length 1).</summary>
+        public double Energy { get; }
+
+        /// <summary>Several lines: iterations, each family's angle error against its target, the deviation, the nodes.</summary>
+        public string Describe() =>
+            string.Format(CultureInfo.InvariantCulture,
+                "{0}\niterations {1}, energy {2:0.###e+0}\nrows: {3:0.###}° max, {4:0.###}° RMS off {5:0.###}° ({6} vertices); columns: {7:0.###}° max, {8:0.###}° RMS off {9:0.###}° ({10} vertices){11}\n" +
+                "deviation from the reference: max {12:0.####} ({13:0.###} % of its diagonal), RMS {14:0.####}\nnode ruling angles: max {15:0.###}°, RMS {16:0.###}° over {17} nodes{18}",
+                IsConverged ? "converged" : "not converged", Iterations, Energy,
+                AngleErrorMaxDegrees[0], AngleErrorRmsDegrees[0], TargetDegrees[0], MeasuredVertices[0],
+                AngleErrorMaxDegrees[1], AngleErrorRmsDegrees[1], TargetDegrees[1], MeasuredVertices[1], FamiliesMet ? ", families met" : ", families not met",
+                MaxDeviation, MaxDeviationPercent, RmsDeviation,
+                NodeRulingAngleMaxDegrees, NodeRulingAngleRmsDegrees, NodeCount, IsTorsionFree ? ", torsion-free" : "");
+
+        /// <inheritdoc />
+        public override string ToString() =>
+            string.Format(CultureInfo.InvariantCulture, "iteration {0}, angle error {1:0.###}° / {2:0.###}°, node ruling angle {3:0.###}°{4}",
+                Iterations, AngleErrorMaxDegrees[0], AngleErrorMaxDegrees[1], NodeRulingAngleMaxDegrees, IsConverged ? ", converged" : "");
+    }
+
+    /// <summary>
+    /// A node of an optimised net (<c>LmlBaseMeshNode</c>): a vertex inside a row and a column, with the angle between
+    /// the rulings of its row's and its column's strips there (paper Sec. 5.2.1).
+    /// </summary>
+    public sealed class BaseMeshNode
+    {
+        internal BaseMeshNode(BaseMeshNodeRecord r)
+        {
+            Vertex = checked((int)r.Vertex);
+            if (r.Defined == 0) return;
+            RulingAngleDegrees = r.RulingAngleDegrees;
+            Axis = (double[])r.Axis.Clone();
+        }
+
+        /// <summary>The vertex (index into <see cref="BaseMeshSolver.Positions"/>).</summary>
+        public int Vertex { get; }
+        /// <summary>Angle between the two rulings as lines, in [0°, 90°] (0: torsion-free); null where a polyline through the node carries no strip.</summary>
+        public double? RulingAngleDegrees { get; }
+        /// <summary>Unit node axis (x, y, z): the mean of the two unit rulings; null where <see cref="RulingAngleDegrees"/> is.</summary>
+        public double[] Axis { get; }
+    }
+
+    /// <summary>
+    /// Optimises a base mesh for strip structures (paper Sec. 3.5, <c>LmlBaseMesh</c>): a net of rows and columns is moved
+    /// near a reference surface until each family of polylines is the asked curves (θ: 0° and 180° asymptotic curves, 90°
+    /// geodesics, others pseudo-geodesics), optionally with torsion-free nodes (Eq. 21): the strips of a node's row and
+    /// column share its ruling. Then every polyline carries a developable strip of planar quads
+    /// (<see cref="BuildStrips"/>). Stepped like <see cref="FieldSolver"/>; one thread at a time (calls are serialised by
+    /// a lock).
+    /// </summary>
+    public sealed class BaseMeshSolver : IDisposable
+    {
+        private readonly BaseMeshHandle handle;
+        private readonly object gate = new object();
+
+        /// <summary>
+        /// Starts from a net given as <paramref name="points"/> (x, y, z per vertex) and its polylines: each row and each
+        /// column a list of vertex indices in order along it (at least two; a vertex on at most one row and one column).
+        /// </summary>
+        /// <exception cref="LamellaException">θ out of range (named), a non-finite point, a polyline referring to a vertex out of range or of fewer than two vertices, a vertex on two rows or two columns (named).</exception>
+        public BaseMeshSolver(LamellaMesh reference, double[] points, int[][] rows, int[][] columns, double thetaRowsDegrees, double thetaColumnsDegrees,
+            bool torsionFree)
+        {
+            if (reference == null) throw new ArgumentNullException(nameof(reference));
+            if (points == null) throw new ArgumentNullException(nameof(points));
+            if (points.Length % 3 != 0) throw new ArgumentException("points holds " + points.Length + " values, not a multiple of 3", nameof(points));
+            uint[] lengths;
+            uint[] vertices = Concatenate(rows, columns, out lengths);
+            Native.Check(NativeMethods.lml_base_mesh_new(reference.Handle, points, Native.Size(points.Length / 3), vertices, Native.Size(vertices.Length),
+                lengths, Native.Size(rows.Length), Native.Size(columns.Length), thetaRowsDegrees, thetaColumnsDegrees, torsionFree ? 1u : 0u, out handle));
+        }
+
+        /// <summary>
+        /// Starts from the quad net of a gridshell (<see cref="StripNet.Vertices"/>; rows share the level i of field 0,
+        /// columns the level j of field 1), near <paramref name="reference"/> (usually the mesh the net was solved on).
+        /// </summary>
+        /// <exception cref="LamellaException">θ out of range (named), or a net with no row or column of three or more vertices.</exception>
+        public BaseMeshSolver(StripNet net, LamellaMesh reference, double thetaRowsDegrees, double thetaColumnsDegrees, bool torsionFree)
+        {
+            if (net == null) throw new ArgumentNullException(nameof(net));
+            if (reference == null) throw new ArgumentNullException(nameof(reference));
+            Native.Check(NativeMethods.lml_base_mesh_from_strip_net(net.Handle, reference.Handle, thetaRowsDegrees, thetaColumnsDegrees,
+                torsionFree ? 1u : 0u, out handle));
+        }
+
+        /// <summary>The rows' then the columns' vertex indices one after another, and their lengths.</summary>
+        private static uint[] Concatenate(int[][] rows, int[][] columns, out uint[] lengths)
+        {
+            if (rows == null) throw new ArgumentNullException(nameof(rows));
+            if (columns == null) throw new ArgumentNullException(nameof(columns));
+            var polylines = new int[rows.Length + columns.Length][];
+            rows.CopyTo(polylines, 0);
+            columns.CopyTo(polylines, rows.Length);
+            lengths = new uint[polylines.Length];
+            long total = 0;
+            for (int l = 0; l < polylines.Length; l++)
+            {
+                if (polylines[l] == null) throw new ArgumentNullException(Name(l, rows.Length), "a polyline is null");
+                lengths[l] = (uint)polylines[l].Length;
+                total += polylines[l].Length;
+            }
+            var vertices = new uint[checked((int)total)];
+            int at = 0;
+            for (int l = 0; l < polylines.Length; l++)
+            {
+                foreach (int v in polylines[l])
+                {
+                    if (v < 0) throw new ArgumentOutOfRangeException(Name(l, rows.Length), "vertex index " + v + " is negative");
+                    vertices[at++] = (uint)v;
+                }
+            }
+            return vertices;
+        }
+
+        /// <summary>"rows[i]" or "columns[j]" for the <paramref name="l"/>-th polyline.</summary>
+        private static string Name(int l, int rowCount) =>
+            l < rowCount ? "rows[" + l + "]" : "columns[" + (l - rowCount) + "]";
+
+        /// <summary>Runs at most <paramref name="maxIterations"/> iterations; returns the state (converged or not).</summary>
+        public BaseMeshReport Step(int maxIterations)
+        {
+            if (maxIterations < 0) throw new ArgumentOutOfRangeException(nameof(maxIterations));
+            lock (gate)
+            {
+                BaseMeshReportRecord record;
+                Native.Check(NativeMethods.lml_base_mesh_step(handle, (uint)maxIterations, out record));
+                return new BaseMeshReport(record);
+            }
+        }
+
+        /// <summary>The state after the last step (or after creation).</summary>
+        public BaseMeshReport Report
+        {
+            get
+            {
+                lock (gate)
+                {
+                    BaseMeshReportRecord record;
+                    Native.Check(NativeMethods.lml_base_mesh_report(handle, out record));
+                    return new BaseMeshReport(record);
+                }
+            }
+        }
+
+        /// <summary>The state of the net as given, before any iteration.</summary>
+        public BaseMeshReport InitialReport
+        {
+            get
+            {
+                lock (gate)
+                {
+                    BaseMeshReportRecord record;
+                    Native.Check(NativeMethods.lml_base_mesh_initial_report(handle, out record));
+                    return new BaseMeshReport(record);
+                }
+            }
+        }
+
+        /// <summary>The current vertex positions, x, y, z per vertex, in the order they were given.</summary>
+        public double[] Positions()
+        {
+            lock (gate)
+            {
+                return Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_base_mesh_positions(handle, b, c, out n));
+            }
+        }
+
+        /// <summary>The nodes (every vertex inside a row and a column, in vertex order) with their ruling angles after the last step.</summary>
+        public BaseMeshNode[] Nodes()
+        {
+            lock (gate)
+            {
+                return Array.ConvertAll(Native.Read((BaseMeshNodeRecord[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_base_mesh_nodes(handle, b, c, out n)),
+                    r => new BaseMeshNode(r));
+            }
+        }
+
+        /// <summary>
+        /// The rectifying strips of family <paramref name="k"/> (0: rows, 1: columns) on the current net: on every polyline
+        /// the developable strip of planar quads fitted to the nodes' common rulings, <paramref name="width"/> wide, judged
+        /// with <paramref name="toleranceDegrees"/> against the family's target (<see cref="Strips.Verdict"/>;
+        /// a strip's curve index is its polyline's index within the family).
+        /// </summary>
+        /// <exception cref="LamellaException">Width or tolerance out of range (named).</exception>
+        public Strips BuildStrips(int k, double width, double toleranceDegrees = 2.0)
+        {
+            if (k < 0 || k > 1) throw new ArgumentOutOfRangeException(nameof(k), "a net has families 0 (rows) and 1 (columns)");
+            lock (gate)
+            {
+                StripsHandle strips;
+                Status status = Native.Check(NativeMethods.lml_base_mesh_strips(handle, (uint)k, width, toleranceDegrees, out strips));
+                return Strips.FromNative(strips, status);
+            }
+        }
+
+        /// <summary>Releases the native session.</summary>
+        public void Dispose() => handle.Dispose();
+    }
+}

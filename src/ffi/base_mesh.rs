@@ -1,0 +1,370 @@
+//! `LmlBaseMesh`: a base-mesh optimisation session (paper Sec. 3.5, with the torsion-free nodes
+//! of Sec. 5.2.1, Eq. 21), stepped like `LmlField`: create from a net of rows and columns near a
+//! reference surface (given, or the quad net of an `LmlStripNet`), step until converged, read
+//! the positions, the nodes' ruling angles and each family's strips, free.
+
+use super::failure::Failure;
+use super::guard::guarded;
+use super::last_error::set_last_error;
+use super::layout::flat_xyz;
+use super::mesh::LmlMesh;
+use super::raw::{copy_out, element_count, handle, handle_mut, input, release, Out};
+use super::status::LmlStatus;
+use super::strip_net::LmlStripNet;
+use super::strips::LmlStrips;
+use crate::base_mesh::{BaseMeshError, BaseMeshParams, BaseMeshReport, BaseMeshSolver, NetMesh, NodeRuling};
+use crate::field::{Family, FieldError};
+use crate::mesh::{TriMesh, Vec3};
+
+/// A base-mesh optimisation session (opaque): a copy of the reference surface, the net with its
+/// auxiliary variables (normals, binormals, rulings) and the solver state. Create it with
+/// `lml_base_mesh_new` or `lml_base_mesh_from_strip_net`, release it with `lml_base_mesh_free`.
+pub struct LmlBaseMesh {
+    solver: BaseMeshSolver,
+}
+
+/// The state of a base-mesh optimisation (written by the library; the caller owns the struct),
+/// measured from outside: each family's angle at the net's own vertices against the reference's
+/// smooth normal, the distance of the net from the reference, and the ruling angle at the nodes.
+/// Lengths in the net's units, angles in degrees; index 0 is the rows, 1 the columns. Never NaN.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LmlBaseMeshReport {
+    /// Iterations run since the session was created.
+    pub iterations: u64,
+    /// 1 when converged (further steps do nothing), else 0.
+    pub converged: u64,
+    /// Each family's target angle along its polylines' direction: θ, or 180° − θ for a
+    /// pseudo-geodesic family whose polylines run the other way (the same curves).
+    pub target_degrees: [f64; 2],
+    /// RMS and maximum of each family's |θ_measured − target| over its measured vertices.
+    pub angle_error_rms_degrees: [f64; 2],
+    pub angle_error_max_degrees: [f64; 2],
+    /// Inner vertices of each family where the angle was measured, and those where the polyline
+    /// is straight (no osculating plane: exact for geodesics and asymptotic curves, a miss for
+    /// pseudo-geodesics).
+    pub measured_vertices: [u64; 2],
+    pub straight_vertices: [u64; 2],
+    /// Largest and RMS distance of a vertex from the reference, and the largest in % of the
+    /// reference's bounding-box diagonal.
+    pub max_deviation: f64,
+    pub rms_deviation: f64,
+    pub max_deviation_percent: f64,
+    /// Nodes (vertices inside a row and a column) whose two strips both exist, and the largest
+    /// and RMS angle between their rulings there (0 at a torsion-free node, Sec. 5.2.1).
+    pub node_count: u64,
+    pub node_ruling_angle_max_degrees: f64,
+    pub node_ruling_angle_rms_degrees: f64,
+    /// 1 when every measured vertex of both families is within 1° of its target (and a
+    /// pseudo-geodesic family is nowhere straight), else 0.
+    pub families_met: u64,
+    /// 1 when every measured node's ruling angle is at most 0.5°, else 0.
+    pub torsion_free: u64,
+    /// The weighted energy (sum of squared residuals) being minimised, on the net scaled to mean
+    /// segment length 1.
+    pub energy: f64,
+}
+
+impl From<&BaseMeshReport> for LmlBaseMeshReport {
+    fn from(r: &BaseMeshReport) -> LmlBaseMeshReport {
+        let count = |n: usize| n as u64;
+        LmlBaseMeshReport {
+            iterations: count(r.iterations),
+            converged: u64::from(r.converged),
+            target_degrees: r.targets_degrees,
+            angle_error_rms_degrees: r.families.each_ref().map(|f| f.rms_error_degrees),
+            angle_error_max_degrees: r.families.each_ref().map(|f| f.max_error_degrees),
+            measured_vertices: r.families.each_ref().map(|f| count(f.measured)),
+            straight_vertices: r.families.each_ref().map(|f| count(f.straight)),
+            max_deviation: r.deviation.max,
+            rms_deviation: r.deviation.rms,
+            max_deviation_percent: r.deviation.max_percent,
+            node_count: count(r.node_torsion.nodes),
+            node_ruling_angle_max_degrees: r.node_torsion.max_degrees,
+            node_ruling_angle_rms_degrees: r.node_torsion.rms_degrees,
+            families_met: u64::from(r.families_met),
+            torsion_free: u64::from(r.torsion_free),
+            energy: r.energy,
+        }
+    }
+}
+
+/// One node of the optimised net (a vertex inside a row and a column): the angle between the
+/// rulings of its row's and its column's strips there (Sec. 5.2.1), and the node axis.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LmlBaseMeshNode {
+    /// The vertex (index into the net's positions).
+    pub vertex: u32,
+    /// 1 when both polylines through the node carry a strip, so that the next two are defined;
+    /// else 0 and they are 0.
+    pub defined: u32,
+    /// Angle between the two rulings as lines, in [0°, 90°]: 0 for a torsion-free node.
+    pub ruling_angle_degrees: f64,
+    /// Unit node axis: the mean of the two unit rulings.
+    pub axis: [f64; 3],
+}
+
+impl From<&NodeRuling> for LmlBaseMeshNode {
+    fn from(n: &NodeRuling) -> LmlBaseMeshNode {
+        let defined = n.angle_degrees.zip(n.axis);
+        LmlBaseMeshNode {
+            // A net has at most MAX_NET_VERTICES (below 2^32) vertices.
+            vertex: n.vertex as u32,
+            defined: u32::from(defined.is_some()),
+            ruling_angle_degrees: defined.map_or(0.0, |(angle, _)| angle),
+            axis: defined.map_or([0.0; 3], |(_, axis)| [axis.x, axis.y, axis.z]),
+        }
+    }
+}
+
+impl From<BaseMeshError> for Failure {
+    fn from(e: BaseMeshError) -> Failure {
+        match e {
+            BaseMeshError::Solver(error) => Failure::from(FieldError::Solver(error)),
+            other => Failure::new(LmlStatus::InvalidArgument, other.to_string()),
+        }
+    }
+}
+
+/// The family of `theta_degrees` (named `name`) as `lml_net_new` reads it: 0° and 180°
+/// asymptotic, 90° geodesic, else pseudo-geodesic.
+fn family(theta_degrees: f64, name: &str) -> Result<Family, Failure> {
+    if !(0.0..=180.0).contains(&theta_degrees) {
+        return Err(Failure::argument(name, format!("must lie in [0, 180], got {theta_degrees}")));
+    }
+    Ok(Family::from_theta(theta_degrees))
+}
+
+/// A session optimising `net` near `reference` with the default weights.
+fn session(net: &NetMesh, reference: &TriMesh, theta_degrees_rows: f64, theta_degrees_columns: f64, torsion_free: u32) -> Result<LmlBaseMesh, Failure> {
+    let mut params = BaseMeshParams::new(family(theta_degrees_rows, "theta_degrees_rows")?, family(theta_degrees_columns, "theta_degrees_columns")?);
+    params.torsion_free = torsion_free != 0;
+    Ok(LmlBaseMesh { solver: BaseMeshSolver::new(net, reference, params)? })
+}
+
+/// Starts optimising a net of rows and columns (paper Sec. 3.5) so that each family of polylines
+/// becomes the asked curves (pseudo-geodesic, geodesic or asymptotic) on or near `reference`,
+/// with the default weights; with `torsion_free` non-zero, also so that the strips of the row and
+/// of the column through every node share its ruling (Eq. 21), in a second stage once the
+/// families have settled. Then every polyline carries a developable strip of planar quads
+/// (`lml_base_mesh_strips`).
+///
+/// - `reference`: the surface the net should stay on (copied).
+/// - `xyz`: `3 * vertex_count` doubles, the net's vertices (finite, in the reference's units).
+/// - `polyline_vertices`: `polyline_vertex_count` zero-based vertex indices: the rows, then the
+///   columns, each in order along its polyline, one after another.
+/// - `polyline_lengths`: `row_count + column_count` vertex counts (each ≥ 2), the rows' first;
+///   they must sum to `polyline_vertex_count`. A vertex lies on at most one row and one column;
+///   consecutive vertices of a polyline are at distinct points.
+/// - `theta_degrees_rows`, `theta_degrees_columns`: each family by its angle θ in [0°, 180°]:
+///   0° and 180° asymptotic curves, 90° geodesics, others pseudo-geodesics of that signed angle
+///   (each held at θ or 180° − θ, whichever its polylines are nearer to as given).
+/// - `out`: receives the new session (release with `lml_base_mesh_free`); NULL on failure.
+///
+/// The arrays are copied; the caller keeps them.
+///
+/// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer with a non-zero count, a
+/// count overflow, lengths not summing to `polyline_vertex_count`, θ out of range, a non-finite
+/// coordinate, a polyline of fewer than two vertices or referring to a vertex out of range, a
+/// vertex on two rows or two columns, coincident consecutive vertices, no vertex inside a
+/// polyline of three or more: the message names the argument, vertex or polyline);
+/// `LML_STATUS_INTERNAL_ERROR` (the problem could not be set up).
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_new(
+    reference: *const LmlMesh,
+    xyz: *const f64,
+    vertex_count: usize,
+    polyline_vertices: *const u32,
+    polyline_vertex_count: usize,
+    polyline_lengths: *const u32,
+    row_count: usize,
+    column_count: usize,
+    theta_degrees_rows: f64,
+    theta_degrees_columns: f64,
+    torsion_free: u32,
+    out: *mut *mut LmlBaseMesh,
+) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (all blocks): the pointer contracts are those documented above.
+        let mut out = unsafe { Out::new(out, "out") }?;
+        out.set(std::ptr::null_mut());
+        let reference = unsafe { handle(reference, "reference") }?;
+        let xyz = unsafe { input(xyz, element_count(vertex_count, 3, "vertex_count")?, "xyz") }?;
+        let polyline_count = row_count.checked_add(column_count).ok_or_else(|| Failure::argument("column_count", "row_count + column_count is too large"))?;
+        let lengths = unsafe { input(polyline_lengths, polyline_count, "polyline_lengths") }?;
+        let vertices = unsafe { input(polyline_vertices, polyline_vertex_count, "polyline_vertices") }?;
+        let total = lengths.iter().try_fold(0usize, |total, &length| total.checked_add(length as usize));
+        if total != Some(polyline_vertex_count) {
+            let sum = total.map_or_else(|| "exceed the address space".to_string(), |t| format!("sum to {t}"));
+            return Err(Failure::argument("polyline_lengths", format!("the {polyline_count} lengths {sum}, not polyline_vertex_count = {polyline_vertex_count}")));
+        }
+        let mut rest = vertices;
+        let mut polylines: Vec<Vec<u32>> = lengths
+            .iter()
+            .map(|&length| {
+                let (line, tail) = rest.split_at(length as usize);
+                rest = tail;
+                line.to_vec()
+            })
+            .collect();
+        let columns = polylines.split_off(row_count);
+        let positions = xyz.chunks_exact(3).map(|p| Vec3::new(p[0], p[1], p[2])).collect();
+        let net = NetMesh::new(positions, polylines, columns)?;
+        out.set_owned(session(&net, &reference.mesh, theta_degrees_rows, theta_degrees_columns, torsion_free)?);
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// Starts optimising the quad net of a gridshell (`lml_strip_net_new`; its rows are the runs of
+/// crossings along one level of the first field, its columns those along one level of the
+/// second) as `lml_base_mesh_new` does: the net's vertices are `lml_strip_net_vertices`.
+///
+/// - `net`: the strip net (not retained); `reference`: the surface (copied), usually the mesh of
+///   the net session the strip net came from.
+/// - θ, `torsion_free` and `out` as in `lml_base_mesh_new`.
+///
+/// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, θ out of range, named;
+/// a net without a vertex inside a row or column of three or more); `LML_STATUS_INTERNAL_ERROR`.
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_from_strip_net(
+    net: *const LmlStripNet,
+    reference: *const LmlMesh,
+    theta_degrees_rows: f64,
+    theta_degrees_columns: f64,
+    torsion_free: u32,
+    out: *mut *mut LmlBaseMesh,
+) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (all blocks): writable `out`; live handles.
+        let mut out = unsafe { Out::new(out, "out") }?;
+        out.set(std::ptr::null_mut());
+        let net = NetMesh::from_quad_net(unsafe { handle(net, "net") }?.quad_net())?;
+        let reference = unsafe { handle(reference, "reference") }?;
+        out.set_owned(session(&net, &reference.mesh, theta_degrees_rows, theta_degrees_columns, torsion_free)?);
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// Releases a session. NULL is accepted and ignored. The handle must not be used again.
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_free(base_mesh: *mut LmlBaseMesh) {
+    guarded(|| {
+        // SAFETY: `base_mesh` is NULL or a live handle from lml_base_mesh_new / _from_strip_net.
+        unsafe { release(base_mesh) };
+        Ok(LmlStatus::Ok)
+    });
+}
+
+/// Runs at most `max_iterations` iterations (the reference's closest points found again before
+/// each) and writes the state to `*report` (may be NULL). With torsion-free nodes asked for, the
+/// second stage starts within a step once the families have settled.
+///
+/// Returns `LML_STATUS_MORE` (step again), `LML_STATUS_CONVERGED`, `LML_STATUS_INVALID_ARGUMENT`
+/// (NULL or misaligned pointer) or `LML_STATUS_DID_NOT_CONVERGE` (an iteration failed
+/// numerically; the net keeps its last good positions).
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_step(base_mesh: *mut LmlBaseMesh, max_iterations: u32, report: *mut LmlBaseMeshReport) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle used by this thread only; `report` NULL or writable.
+        let base_mesh = unsafe { handle_mut(base_mesh, "base_mesh") }?;
+        let report = unsafe { Out::optional(report, "report") }?;
+        let step = base_mesh.solver.step(usize::try_from(max_iterations).unwrap_or(usize::MAX))?;
+        if let Some(mut report) = report {
+            report.set(LmlBaseMeshReport::from(&step));
+        }
+        Ok(if step.converged { LmlStatus::Converged } else { LmlStatus::More })
+    })
+}
+
+/// Writes the state after the last step (or after creation) to `*report`.
+/// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_report(base_mesh: *const LmlBaseMesh, report: *mut LmlBaseMeshReport) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle; writable `report`.
+        let base_mesh = unsafe { handle(base_mesh, "base_mesh") }?;
+        unsafe { Out::new(report, "report") }?.set(LmlBaseMeshReport::from(base_mesh.solver.report()));
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// Writes the state of the net as given, before any iteration, to `*report`: what the
+/// optimisation started from.
+/// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_initial_report(base_mesh: *const LmlBaseMesh, report: *mut LmlBaseMeshReport) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle; writable `report`.
+        let base_mesh = unsafe { handle(base_mesh, "base_mesh") }?;
+        unsafe { Out::new(report, "report") }?.set(LmlBaseMeshReport::from(base_mesh.solver.initial_report()));
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// Copies the current vertex positions (xyz per vertex, `3 n` doubles, in the net's units, in
+/// the order they were given) into `xyz` with the two-call pattern: `*needed` receives `3 n`;
+/// with `capacity` below it nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned
+/// (`xyz` may be NULL then). Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or
+/// `LML_STATUS_INVALID_ARGUMENT` (NULL session or `needed`).
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_positions(base_mesh: *const LmlBaseMesh, xyz: *mut f64, capacity: usize, needed: *mut usize) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle; `xyz` writable for `capacity` doubles; `needed` writable.
+        let base_mesh = unsafe { handle(base_mesh, "base_mesh") }?;
+        unsafe { copy_out(&flat_xyz(&base_mesh.solver.positions()), xyz, capacity, needed, "xyz") }
+    })
+}
+
+/// Copies the nodes (every vertex inside a row and a column, in vertex order) with their ruling
+/// angles from the strips of the net as it stands after the last step, into `nodes` with the
+/// two-call pattern (`*needed` receives the node count). Returns as `lml_base_mesh_positions`.
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_nodes(base_mesh: *const LmlBaseMesh, nodes: *mut LmlBaseMeshNode, capacity: usize, needed: *mut usize) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle; `nodes` writable for `capacity` structs; `needed` writable.
+        let base_mesh = unsafe { handle(base_mesh, "base_mesh") }?;
+        let flat: Vec<LmlBaseMeshNode> = base_mesh.solver.nodes().iter().map(LmlBaseMeshNode::from).collect();
+        unsafe { copy_out(&flat, nodes, capacity, needed, "nodes") }
+    })
+}
+
+/// Builds the rectifying strips of family `k` (0: rows, 1: columns) on the current net: on every
+/// polyline, the developable strip of planar quads whose rulings are fitted to the nodes'
+/// common rulings (Sec. 5.2.1), cut to `width` (> 0, the net's units) and unrolled, judged with
+/// `tolerance_degrees` in (0, 180) against the family's target angle (`target_degrees[k]` of the
+/// report) on the reference. The strips are a new `LmlStrips` handle (read it with the
+/// `lml_strips_*` functions, release it with `lml_strips_free`); a strip's curve index is its
+/// polyline's index within the family. Polylines that carry no strip are listed by
+/// `lml_strips_skipped`.
+///
+/// Returns `LML_STATUS_OK` (every strip within the tolerance, no flipped quad);
+/// `LML_STATUS_NO_ACCEPTABLE_FAMILY` (the strips are built and `*out` is valid, but some miss the
+/// angle by more than the tolerance, have flipped quads or leave the surface, or no strip could
+/// be built: `lml_last_error_message()` names the worst strip, `lml_strips_verdict` gives the
+/// numbers); `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `k` > 1, `width` or
+/// `tolerance_degrees` out of range, named).
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_strips(base_mesh: *const LmlBaseMesh, k: u32, width: f64, tolerance_degrees: f64, out: *mut *mut LmlStrips) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (all blocks): writable `out`; live handle.
+        let mut out = unsafe { Out::new(out, "out") }?;
+        out.set(std::ptr::null_mut());
+        let base_mesh = unsafe { handle(base_mesh, "base_mesh") }?;
+        if k > 1 {
+            return Err(Failure::argument("k", format!("a net has families 0 (rows) and 1 (columns), got {k}")));
+        }
+        let [rows, columns] = base_mesh.solver.strips(width, tolerance_degrees)?;
+        let pattern = if k == 0 { rows } else { columns };
+        let status = if pattern.verdict.is_acceptable() {
+            LmlStatus::Ok
+        } else {
+            set_last_error(&pattern.verdict.message());
+            LmlStatus::NoAcceptableFamily
+        };
+        // Each family's strips are judged at its target (the solver's own reading of θ).
+        let theta_degrees = Some(base_mesh.solver.targets_degrees()[k as usize]);
+        out.set_owned(LmlStrips { pattern, theta_degrees });
+        Ok(status)
+    })
+}
