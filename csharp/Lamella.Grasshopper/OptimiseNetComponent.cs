@@ -52,21 +52,6 @@ namespace Lamella.Grasshopper
             pManager.AddTextParameter("Report", "R", "Iterations, each family's angle error, the deviation from the reference, the node ruling angles, each family's strip verdict.", GH_ParamAccess.item);
         }
 
-        /// <summary>The input mesh's faces as four corners each (a triangle repeats its third corner), indices into its vertices.</summary>
-        private static int[] FaceCorners(Mesh mesh)
-        {
-            var corners = new int[4 * mesh.Faces.Count];
-            for (int f = 0; f < mesh.Faces.Count; f++)
-            {
-                MeshFace face = mesh.Faces[f];
-                corners[4 * f] = face.A;
-                corners[4 * f + 1] = face.B;
-                corners[4 * f + 2] = face.C;
-                corners[4 * f + 3] = face.D;
-            }
-            return corners;
-        }
-
         /// <summary>The points of each polyline of <paramref name="lines"/> at <paramref name="xyz"/>, packed.</summary>
         private static Packed PolylinePoints(double[] xyz, int[][] lines)
         {
@@ -106,7 +91,7 @@ namespace Lamella.Grasshopper
             }
             CleanMesh clean = CleanMeshInput(input);
             // The net's own vertices, welded where they coincide exactly; its quads on them.
-            int[] corners = FaceCorners(netInput);
+            int[] corners = RhinoConversion.FaceCorners(netInput);
             CleanMesh welded = CleanMesh.FromFaces(RhinoConversion.PointsToArray(netInput.Vertices.ToPoint3dArray()), corners, 0);
             for (int k = 0; k < corners.Length; k++)
             {

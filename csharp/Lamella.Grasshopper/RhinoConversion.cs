@@ -20,6 +20,12 @@ namespace Lamella.Grasshopper
         public static CleanMesh Clean(Mesh mesh, double tolerance)
         {
             double[] xyz = PointsToArray(mesh.Vertices.ToPoint3dArray());
+            return CleanMesh.FromFaces(xyz, FaceCorners(mesh), tolerance);
+        }
+
+        /// <summary>The mesh's faces as four corners each (a triangle repeats its third corner), indices into its vertices.</summary>
+        public static int[] FaceCorners(Mesh mesh)
+        {
             var corners = new int[4 * mesh.Faces.Count];
             for (int f = 0; f < mesh.Faces.Count; f++)
             {
@@ -29,7 +35,7 @@ namespace Lamella.Grasshopper
                 corners[4 * f + 2] = face.C;
                 corners[4 * f + 3] = face.D;
             }
-            return CleanMesh.FromFaces(xyz, corners, tolerance);
+            return corners;
         }
 
         /// <summary>The points as x, y, z each.</summary>

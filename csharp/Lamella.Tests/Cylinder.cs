@@ -18,6 +18,23 @@ namespace Lamella.Tests
         public readonly double[] InitialField;
         public int VertexCount => Xyz.Length / 3;
 
+        /// <summary>
+        /// Start fields of the geodesic net of circles and rulings, tilted a little off both: the height plus 0.18 of
+        /// the arc length, and the arc length less 0.18 of the height.
+        /// </summary>
+        public double[][] TiltedCirclesAndRulings()
+        {
+            var first = new double[VertexCount];
+            var second = new double[VertexCount];
+            for (int v = 0; v < VertexCount; v++)
+            {
+                double arc = Radius * Math.Atan2(Xyz[3 * v + 1], Xyz[3 * v]);
+                first[v] = Xyz[3 * v + 2] + 0.18 * arc;
+                second[v] = arc - 0.18 * Xyz[3 * v + 2];
+            }
+            return new[] { first, second };
+        }
+
         public Cylinder(int columns, int rows, int seed)
         {
             double arc = Radius * SpanDegrees * Math.PI / 180.0, ds = arc / columns, dz = Height / rows;

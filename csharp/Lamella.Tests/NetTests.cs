@@ -104,15 +104,8 @@ namespace Lamella.Tests
         public void TheGeodesicNetOfACylinderIsItsCirclesAndRulings()
         {
             var cylinder = new Cylinder(16, 10, 11);
-            int n = cylinder.VertexCount;
-            var first = new double[n];
-            var second = new double[n];
-            for (int v = 0; v < n; v++)
-            {
-                double arc = Cylinder.Radius * Math.Atan2(cylinder.Xyz[3 * v + 1], cylinder.Xyz[3 * v]);
-                first[v] = cylinder.Xyz[3 * v + 2] + 0.18 * arc;
-                second[v] = arc - 0.18 * cylinder.Xyz[3 * v + 2];
-            }
+            double[][] starts = cylinder.TiltedCirclesAndRulings();
+            double[] first = starts[0], second = starts[1];
             using (var mesh = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
             using (var net = new NetSolver(mesh, 90.0, 90.0, first, second, 30.0, 90.0))
             {

@@ -281,12 +281,8 @@ pub unsafe extern "C" fn lml_base_mesh_step(base_mesh: *mut LmlBaseMesh, max_ite
 /// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
 #[no_mangle]
 pub unsafe extern "C" fn lml_base_mesh_report(base_mesh: *const LmlBaseMesh, report: *mut LmlBaseMeshReport) -> LmlStatus {
-    guarded(|| {
-        // SAFETY (both blocks): live handle; writable `report`.
-        let base_mesh = unsafe { handle(base_mesh, "base_mesh") }?;
-        unsafe { Out::new(report, "report") }?.set(LmlBaseMeshReport::from(base_mesh.solver.report()));
-        Ok(LmlStatus::Ok)
-    })
+    // SAFETY: the caller's contract, as documented above.
+    unsafe { write_report(base_mesh, report, BaseMeshSolver::report) }
 }
 
 /// Writes the state of the net as given, before any iteration, to `*report`: what the
@@ -294,10 +290,16 @@ pub unsafe extern "C" fn lml_base_mesh_report(base_mesh: *const LmlBaseMesh, rep
 /// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
 #[no_mangle]
 pub unsafe extern "C" fn lml_base_mesh_initial_report(base_mesh: *const LmlBaseMesh, report: *mut LmlBaseMeshReport) -> LmlStatus {
+    // SAFETY: the caller's contract, as documented above.
+    unsafe { write_report(base_mesh, report, BaseMeshSolver::initial_report) }
+}
+
+/// Writes `which` report of a live session to `*report` (writable), or fails naming the NULL argument.
+unsafe fn write_report(base_mesh: *const LmlBaseMesh, report: *mut LmlBaseMeshReport, which: fn(&BaseMeshSolver) -> &BaseMeshReport) -> LmlStatus {
     guarded(|| {
-        // SAFETY (both blocks): live handle; writable `report`.
+        // SAFETY (both blocks): live handle; writable `report` (the callers' contracts).
         let base_mesh = unsafe { handle(base_mesh, "base_mesh") }?;
-        unsafe { Out::new(report, "report") }?.set(LmlBaseMeshReport::from(base_mesh.solver.initial_report()));
+        unsafe { Out::new(report, "report") }?.set(LmlBaseMeshReport::from(which(&base_mesh.solver)));
         Ok(LmlStatus::Ok)
     })
 }
