@@ -2220,6 +2220,37 @@ LmlStatus lml_base_mesh_from_strip_net(const struct LmlStripNet *net,
 // Releases a session. NULL is accepted and ignored. The handle must not be used again.
 void lml_base_mesh_free(struct LmlBaseMesh *base_mesh);
 
+// Serialises the whole session (the net as given, the reference surface, the families with
+// their oriented targets, the stage and the net it started from, the positions with their
+// auxiliary variables, the vertices held past the reference's boundary, solver damping, the
+// initial and the last report) as bytes: the magic `"LMLB"`, a little-endian `uint32_t` format
+// version, then the state. Portable across platforms; a restored session continues bit for bit
+// as the original would have.
+//
+// Two-call pattern: `*needed` is always set to the byte count; if `out` is NULL or `capacity`
+// (in bytes) is smaller, nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned. The
+// buffer stays owned by the caller.
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+LmlStatus lml_base_mesh_save(const struct LmlBaseMesh *base_mesh,
+                             uint8_t *out,
+                             size_t capacity,
+                             size_t *needed);
+
+// Restores a session from `length` bytes written by `lml_base_mesh_save` (copied; the caller
+// keeps them). `out` receives the new session, owned by the caller (release with
+// `lml_base_mesh_free`); set to NULL on failure.
+//
+// Every restored quantity is checked: the net as in `lml_base_mesh_new` and the reference as in
+// `lml_mesh_new`, the parameters in range (and at most 100 damped trials per iteration), each
+// target the family's angle or that angle read backwards (θ or 180° − θ), the stage one the
+// parameters lead to, every value finite, counters and damping in range, both reports about the
+// net's vertices.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_CORRUPT_DATA` (empty, truncated, damaged or inconsistent
+// bytes, another kind of session, or another format version: the message says which);
+// `LML_STATUS_INVALID_ARGUMENT` (NULL `out`, NULL `bytes` with a non-zero length).
+LmlStatus lml_base_mesh_load(const uint8_t *bytes, size_t length, struct LmlBaseMesh **out);
+
 // Runs at most `max_iterations` iterations (the reference's closest points found again before
 // each) and writes the state to `*report` (may be NULL). With torsion-free nodes asked for, the
 // second stage starts within a step once the families have settled.

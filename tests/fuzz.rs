@@ -1,6 +1,6 @@
 //! In-process fuzzing of every reader of hostile input, on stable Rust (FUZZING.md): the OBJ
-//! reader, the session loader, the command line's field CSV, strokes and guides readers, and the
-//! C ABI's mesh and field creation.
+//! reader, the session loaders (field, surface, net, base mesh), the command line's field CSV,
+//! strokes and guides readers, and the C ABI's mesh and field creation.
 //!
 //! A mutation fuzzer with outcome feedback: each target starts from a seed corpus this file makes
 //! from the project's own surfaces and writers (plus the committed crash reproducers in

@@ -9,8 +9,9 @@ namespace Lamella.Tests
     /// <summary>
     /// Base-mesh optimisation through the binding (paper Sec. 3.5) with torsion-free nodes (Sec. 5.2.1, Eq. 21): the net
     /// of ±45° helices on the cylinder, perturbed and optimised back, judged from outside (on the cylinder, geodesic
-    /// against its exact normal, node ruling angles, planar strips sharing the rulings at the nodes); the rows and columns
-    /// of a quad mesh; a strip net's quad net as the start; invalid arguments.
+    /// against its exact normal, node ruling angles, planar strips sharing the rulings at the nodes); a saved session
+    /// stepping on to the same bits; the rows and columns of a quad mesh; a strip net's quad net as the start; invalid
+    /// arguments.
     /// </summary>
     [TestFixture]
     public class BaseMeshTests
@@ -158,6 +159,40 @@ namespace Lamella.Tests
                 {
                     Assert.AreEqual(node.RulingAngleDegrees.Value, LineAngle(rulingAt[0][node.Vertex], rulingAt[1][node.Vertex]), 1e-6);
                 }
+            }
+        }
+
+        [Test]
+        public void ASavedSessionStepsOnToTheSameBits()
+        {
+            var cylinder = new Cylinder(36, 20, 7);
+            var net = new HelixNet(0.02);
+            using (var reference = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            using (var solver = new BaseMeshSolver(reference, net.Points, net.Rows, net.Columns, 90.0, 90.0, true))
+            {
+                solver.Step(3);
+                byte[] bytes = solver.Save();
+                CollectionAssert.AreEqual(new byte[] { 76, 77, 76, 66 }, bytes.Take(4).ToArray(), "the magic \"LMLB\"");
+                using (var restored = BaseMeshSolver.Load(bytes))
+                {
+                    CollectionAssert.AreEqual(bytes, restored.Save());
+                    CollectionAssert.AreEqual(solver.Positions(), restored.Positions());
+                    Assert.AreEqual(solver.InitialReport.Describe(), restored.InitialReport.Describe());
+                    BaseMeshReport mine = solver.Step(5), theirs = restored.Step(5);
+                    Assert.AreEqual(8, theirs.Iterations);
+                    Assert.AreEqual(mine.Describe(), theirs.Describe());
+                    Assert.AreEqual(mine.Energy, theirs.Energy);
+                    CollectionAssert.AreEqual(solver.Positions(), restored.Positions(), "the same bits after stepping on");
+                }
+                var error = Assert.Throws<LamellaException>(() => BaseMeshSolver.Load(bytes.Take(bytes.Length - 1).ToArray()));
+                Assert.AreEqual(Status.CorruptData, error.Status);
+                error = Assert.Throws<LamellaException>(() => BaseMeshSolver.Load(new byte[] { 76, 77, 76, 78 }));
+                Assert.AreEqual(Status.CorruptData, error.Status);
+                byte[] netMagic = (byte[])bytes.Clone();
+                netMagic[3] = 78; // "LMLN", a net session's magic
+                error = Assert.Throws<LamellaException>(() => BaseMeshSolver.Load(netMagic));
+                StringAssert.Contains("not a Lamella base-mesh session", error.NativeMessage);
+                Assert.Throws<ArgumentNullException>(() => BaseMeshSolver.Load(null));
             }
         }
 

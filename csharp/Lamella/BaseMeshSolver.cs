@@ -146,6 +146,36 @@ namespace Lamella
                 torsionFree ? 1u : 0u, out handle));
         }
 
+        private BaseMeshSolver(BaseMeshHandle handle)
+        {
+            this.handle = handle;
+        }
+
+        /// <summary>
+        /// Restores a session saved with <see cref="Save"/> (<c>lml_base_mesh_load</c>); it continues bit for bit as the
+        /// saved one would have.
+        /// </summary>
+        /// <exception cref="LamellaException"><see cref="Status.CorruptData"/> for damaged, truncated or foreign bytes (another kind of session, another format version).</exception>
+        public static BaseMeshSolver Load(byte[] bytes)
+        {
+            if (bytes == null) throw new ArgumentNullException(nameof(bytes));
+            BaseMeshHandle loaded;
+            Native.Check(NativeMethods.lml_base_mesh_load(bytes, Native.Size(bytes.Length), out loaded));
+            return new BaseMeshSolver(loaded);
+        }
+
+        /// <summary>
+        /// The whole session as bytes (<c>lml_base_mesh_save</c>): the net as given, the reference, families, stage,
+        /// positions with their auxiliary variables, solver state, the initial and the last report.
+        /// </summary>
+        public byte[] Save()
+        {
+            lock (gate)
+            {
+                return Native.Read((byte[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_base_mesh_save(handle, b, c, out n));
+            }
+        }
+
         /// <summary>The rows' then the columns' vertex indices one after another, and their lengths.</summary>
         private static uint[] Concatenate(int[][] rows, int[][] columns, out uint[] lengths)
         {

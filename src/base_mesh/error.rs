@@ -15,6 +15,11 @@ pub enum BaseMeshError {
     NothingToOptimise,
     /// The least-squares solver failed.
     Solver(SolverError),
+    /// Saved session bytes are not a base-mesh session, are truncated or damaged, or restore a
+    /// quantity out of range; `message` says which.
+    CorruptData { message: String },
+    /// Saved session bytes come from a newer (or unknown) format version.
+    UnsupportedVersion { found: u32, supported: u32 },
 }
 
 impl fmt::Display for BaseMeshError {
@@ -24,6 +29,10 @@ impl fmt::Display for BaseMeshError {
             BaseMeshError::InvalidNet { message } => write!(f, "net: {message}"),
             BaseMeshError::NothingToOptimise => write!(f, "no vertex lies inside a row or a column of at least three vertices: nothing to optimise"),
             BaseMeshError::Solver(e) => write!(f, "solver: {e}"),
+            BaseMeshError::CorruptData { message } => write!(f, "corrupt base-mesh session: {message}"),
+            BaseMeshError::UnsupportedVersion { found, supported } => {
+                write!(f, "base-mesh session format version {found} is not supported (this library reads version {supported})")
+            }
         }
     }
 }

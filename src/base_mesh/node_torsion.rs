@@ -3,8 +3,9 @@
 //! Each polyline carries a one-parameter family of developable strips of planar quads, their
 //! rulings in the outer bisecting planes (Eq. 16–17, [`crate::strips::reflected_rulings`]). A
 //! node is torsion-free when the strips of its row and its column share the ruling there. The
-//! strips are chosen as a whole: each first fitted to its polyline's version-1 rulings (Fig. 19),
-//! then, in turn, each family's strips refitted to the other family's rulings at their nodes
+//! strips are chosen as a whole: each first fitted to the line its rectifying plane shares with
+//! the crossing polyline's at each node (where the two planes are apart), elsewhere to its own
+//! version-1 rulings (Fig. 19); then, in turn, each family's strips refitted to the other family's rulings at their nodes
 //! ([`crate::strips::fitted_rulings`]), a few rounds. A node's torsion is the angle between the two
 //! strips' rulings there: 0 everywhere exactly when the strips share every node's ruling, what
 //! Eq. 21 asks of the optimised net.
@@ -63,10 +64,43 @@ fn rulings_at(net: &NetMesh, rulings: &PolylineRulings) -> Vec<[Option<Vec3>; 2]
     at
 }
 
+/// Least angle between the rectifying planes of a row and a column for their common line to
+/// count as a candidate ruling (about 10°): planes nearer to each other (a net of geodesics,
+/// whose rectifying planes are both the tangent plane) leave it undetermined.
+const MIN_PLANE_ANGLE_SINE: f64 = 0.17;
+
+/// At each vertex inside a row and a column whose rectifying planes cross at
+/// [`MIN_PLANE_ANGLE_SINE`] or more, the line they share: the only ruling both strips could
+/// have there.
+fn common_rulings(net: &NetMesh) -> Vec<Option<Vec3>> {
+    let p = net.positions();
+    (0..net.vertex_count())
+        .map(|v| {
+            let bisector_normal = |k: usize| {
+                let (back, front) = net.along(v, k).inner()?;
+                let (f, b) = ((p[front as usize] - p[v]).try_normalize(0.0)?, (p[back as usize] - p[v]).try_normalize(0.0)?);
+                (f + b).try_normalize(1e-9)
+            };
+            let line = bisector_normal(0)?.cross(&bisector_normal(1)?);
+            (line.norm() >= MIN_PLANE_ANGLE_SINE).then(|| line.normalize())
+        })
+        .collect()
+}
+
 /// The strip of every polyline, chosen as the module describes.
 pub fn polyline_rulings(net: &NetMesh) -> PolylineRulings {
     let points = [0, 1].map(|k| polyline_points(net, k));
-    let mut rulings: PolylineRulings = [0, 1].map(|k| points[k].par_iter().map(|p| fitted_rulings(p, &version_one_rulings(p, &[]))).collect());
+    let common = common_rulings(net);
+    let mut rulings: PolylineRulings = [0, 1].map(|k| {
+        net.polylines(k)
+            .par_iter()
+            .zip(&points[k])
+            .map(|(line, p)| {
+                let targets: Vec<Option<Vec3>> = line.iter().zip(version_one_rulings(p, &[])).map(|(&v, own)| common[v as usize].or(own)).collect();
+                fitted_rulings(p, &targets)
+            })
+            .collect()
+    });
     for _ in 0..ROUNDS {
         for k in 0..2 {
             let at = rulings_at(net, &rulings);

@@ -3,6 +3,7 @@
 
 use super::error::BaseMeshError;
 use crate::field::Family;
+use crate::mesh::Vec3;
 use crate::solver::LmOptions;
 use serde::{Deserialize, Serialize};
 
@@ -34,7 +35,9 @@ impl Default for BaseMeshWeights {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct BaseMeshParams {
     /// The family of the rows and of the columns (taken by name, [`Family::by_name`]):
-    /// pseudo-geodesic, geodesic or asymptotic.
+    /// pseudo-geodesic, geodesic, asymptotic, or of constant slope against an axis with a fixed
+    /// slope (Sec. 5.2.3: two such families about one axis make a net whose node axes are all
+    /// parallel to it, torsion-free).
     pub families: [Family; 2],
     /// Ask for torsion-free nodes (Eq. 21): a common ruling at every node, in the rectifying
     /// plane of both polylines, and developable strips between consecutive rulings.
@@ -74,8 +77,16 @@ impl BaseMeshParams {
                 Family::PseudoGeodesic { theta_degrees } if !(theta_degrees.is_finite() && theta_degrees > 0.0 && theta_degrees < 180.0) => {
                     return invalid("families", format!("a pseudo-geodesic angle must lie in [0°, 180°], got {theta_degrees}"));
                 }
-                Family::ConstantSlope { .. } => {
-                    return invalid("families", "the base-mesh optimisation holds pseudo-geodesic, geodesic and asymptotic families; constant slope is a field family only".into());
+                Family::ConstantSlope { free_slope: true, .. } => {
+                    return invalid("families", "the base-mesh optimisation holds constant-slope families with a fixed slope only".into());
+                }
+                Family::ConstantSlope { axis, slope_degrees, .. } => {
+                    if !(axis.iter().all(|a| a.is_finite()) && Vec3::from(axis).norm() > 0.0) {
+                        return invalid("families", format!("a constant-slope axis must be finite and non-zero, got {axis:?}"));
+                    }
+                    if !(slope_degrees.is_finite() && slope_degrees.abs() < 90.0) {
+                        return invalid("families", format!("a slope must lie in (−90°, 90°), got {slope_degrees}"));
+                    }
                 }
                 _ => {}
             }
@@ -98,6 +109,9 @@ impl BaseMeshParams {
         if !(self.relative_tolerance.is_finite() && (0.0..1.0).contains(&self.relative_tolerance)) {
             return invalid("relative_tolerance", format!("must lie in [0, 1), got {}", self.relative_tolerance));
         }
-        Ok(())
+        crate::field::validate_lm(&self.lm).map_err(|e| match e {
+            crate::field::FieldError::InvalidParameter { name, message } => BaseMeshError::InvalidParameter { name, message },
+            other => BaseMeshError::InvalidParameter { name: "lm", message: other.to_string() },
+        })
     }
 }

@@ -15,6 +15,7 @@
 //! | P(θ) | `b·ê_f`, `b·ê_b`, `b·b − 1` (binormal), `(b·n)² − cos²θ`, `(b·n)(b·u) − sinθ cosθ` (Eq. 8), `u·u − 1`, `u·n`, `u·t̂` (Eq. 10) | curve |
 //! | G | `b·ê_f`, `b·ê_b`, `b·b − 1`, `n·b` | curve |
 //! | A | `n·ê_f`, `n·ê_b` | curve |
+//! | slope | `ê_f·a − sin β` for the segment to the front neighbour (Eq. 22 per segment); inside the polyline `a·(ê_f + ê_b)/‖ê_f + ê_b‖`, the axis in the rectifying plane (parallel node axes, Sec. 5.2.2) | curve |
 //! | fairness | `v_back − 2v + v_front` per family | fair |
 //! | closeness | `(v − v*)·n*` (Eq. 14: the distance to the reference along its normal at the closest point `v*`, frozen per iteration); past the reference's boundary also the tangential part of `v − v*` (zero rows elsewhere); `v − v_start` | close, pull |
 //! | torsion-free | `d·(ê_f + ê_b)/‖ê_f + ê_b‖` per family (Eq. 21, first row, normalised: `d` in both rectifying planes), `d·d − 1`; on no polyline `d − n*` | torsion |
@@ -37,26 +38,35 @@ pub(crate) enum CurveRows {
     Pseudo { cos: f64, sin: f64 },
     Geodesic,
     Asymptotic,
+    /// Constant slope (Eq. 22, per segment): every unit segment `ê` along the polyline's
+    /// direction has `ê·a = sin β` for the unit axis `a`; then the discrete principal normal
+    /// `ê_f + ê_b` is orthogonal to `a`, so `a` lies in every rectifying plane and rulings along
+    /// `a` make planar quads: parallel node axes.
+    Slope { axis: Vec3, sin: f64 },
 }
 
 impl CurveRows {
-    /// The rows of `family` at target angle `theta_degrees` for the polyline direction.
-    pub fn new(family: Family, theta_degrees: f64) -> CurveRows {
+    /// The rows of `family` at the target `target_degrees` (an angle, or a slope) for the
+    /// polyline direction.
+    pub fn new(family: Family, target_degrees: f64) -> CurveRows {
         match family {
             Family::Geodesic => CurveRows::Geodesic,
             Family::Asymptotic => CurveRows::Asymptotic,
-            _ => {
-                let (sin, cos) = theta_degrees.to_radians().sin_cos();
+            Family::ConstantSlope { .. } => CurveRows::Slope { axis: family.slope_axis().unwrap_or_else(Vec3::z), sin: target_degrees.to_radians().sin() },
+            Family::PseudoGeodesic { .. } => {
+                let (sin, cos) = target_degrees.to_radians().sin_cos();
                 CurveRows::Pseudo { cos, sin }
             }
         }
     }
 
+    /// Rows at a vertex inside the polyline (the slope row is per segment, counted apart).
     fn rows(&self) -> usize {
         match self {
             CurveRows::Pseudo { .. } => 8,
             CurveRows::Geodesic => 4,
             CurveRows::Asymptotic => 2,
+            CurveRows::Slope { .. } => 0,
         }
     }
 
@@ -65,7 +75,7 @@ impl CurveRows {
         match self {
             CurveRows::Pseudo { .. } => 6,
             CurveRows::Geodesic => 3,
-            CurveRows::Asymptotic => 0,
+            CurveRows::Asymptotic | CurveRows::Slope { .. } => 0,
         }
     }
 }
@@ -150,6 +160,9 @@ impl BaseMeshProblem {
                     size += curves[k].auxiliaries();
                     rows += curves[k].rows() + 3;
                 }
+            }
+            for k in (0..2).filter(|&k| matches!(curves[k], CurveRows::Slope { .. })) {
+                rows += usize::from(net.along(v, k).front.is_some()) + usize::from(net.along(v, k).inner().is_some());
             }
             rows += 7;
             if torsion_free {
@@ -320,6 +333,7 @@ impl BaseMeshProblem {
                     chord_row(&mut rows, &to_front, cf, &n, local_column);
                     chord_row(&mut rows, &to_back, cb, &n, local_column);
                 }
+                CurveRows::Slope { .. } => {}
             }
             let second = p(back) - p(vv) * 2.0 + p(front);
             for c in 0..3 {
@@ -327,6 +341,25 @@ impl BaseMeshProblem {
                 rows.set(cb + c, fair);
                 rows.set(cf + c, fair);
                 rows.set(cv + c, -2.0 * fair);
+                rows.next();
+            }
+        }
+
+        // Constant slope: the segment to the front neighbour, and the axis in the rectifying plane.
+        for k in 0..2 {
+            let CurveRows::Slope { axis, sin } = self.curves[k] else { continue };
+            let along = self.net.along(v, k);
+            if let Some(front) = along.front {
+                let segment = Chord::new(p(front) - p(vv));
+                rows.value(curve * (segment.unit.dot(&axis) - sin));
+                let g = segment.partial(&axis) * curve;
+                rows.add(column(front), &g);
+                rows.add(column(vv), &-g);
+                rows.next();
+            }
+            if let Some((back, front)) = along.inner() {
+                let (to_front, to_back) = (Chord::new(p(front) - p(vv)), Chord::new(p(back) - p(vv)));
+                plane_row(&mut rows, &to_front, &to_back, &axis, curve, [column(front), column(back), column(vv)]);
                 rows.next();
             }
         }
@@ -361,17 +394,8 @@ impl BaseMeshProblem {
             for k in 0..2 {
                 let Some((back, front)) = self.net.along(v, k).inner() else { continue };
                 let (to_front, to_back) = (Chord::new(p(front) - p(vv)), Chord::new(p(back) - p(vv)));
-                let sum = to_front.unit + to_back.unit;
-                let length = sum.norm().max(MIN_BISECTOR);
-                rows.value(torsion * d.dot(&sum) / length);
-                rows.add(d_column, &(sum * (torsion / length)));
-                // Through `s = ê_f + ê_b`: ∂(d·s/‖s‖)/∂s = (d − (d·ŝ) ŝ)/‖s‖ (d/‖s‖ below the floor).
-                let unit = sum / length;
-                let through = if sum.norm() > MIN_BISECTOR { (d - unit * d.dot(&unit)) / length } else { d / length };
-                let (gf, gb) = (to_front.partial(&through) * torsion, to_back.partial(&through) * torsion);
-                rows.add(column(front), &gf);
-                rows.add(column(back), &gb);
-                rows.add(column(vv), &-(gf + gb));
+                let sum = plane_row(&mut rows, &to_front, &to_back, &d, torsion, [column(front), column(back), column(vv)]);
+                rows.add(d_column, &(sum * torsion));
                 rows.next();
             }
             rows.value(torsion * (d.dot(&d) - 1.0));
@@ -445,6 +469,24 @@ impl LeastSquaresProblem for BaseMeshProblem {
     fn variable_layout(&self) -> VariableLayout {
         self.layout.clone()
     }
+}
+
+/// Writes the value and the position partials of the row `scale · d·(ê_f + ê_b)/‖ê_f + ê_b‖`
+/// (the sine of `d`'s angle to the rectifying plane, the norm floored at [`MIN_BISECTOR`]) for
+/// the chords to the front and back neighbours, whose stencil columns are `[front, back, v]`;
+/// returns its partial in `d` divided by `scale`.
+fn plane_row(rows: &mut Rows, to_front: &Chord, to_back: &Chord, d: &Vec3, scale: f64, [front, back, v]: [usize; 3]) -> Vec3 {
+    let sum = to_front.unit + to_back.unit;
+    let length = sum.norm().max(MIN_BISECTOR);
+    rows.value(scale * d.dot(&sum) / length);
+    // Through `s = ê_f + ê_b`: ∂(d·s/‖s‖)/∂s = (d − (d·ŝ) ŝ)/‖s‖ (d/‖s‖ below the floor).
+    let unit = sum / length;
+    let through = if sum.norm() > MIN_BISECTOR { (d - unit * d.dot(&unit)) / length } else { d / length };
+    let (gf, gb) = (to_front.partial(&through) * scale, to_back.partial(&through) * scale);
+    rows.add(front, &gf);
+    rows.add(back, &gb);
+    rows.add(v, &-(gf + gb));
+    sum / length
 }
 
 /// The three values of `x` from `start` as a vector.
@@ -534,7 +576,8 @@ mod tests {
     #[test]
     fn every_block_jacobian_matches_finite_differences() {
         let pseudo = CurveRows::new(Family::PseudoGeodesic { theta_degrees: 60.0 }, 60.0);
-        for curves in [[pseudo, pseudo], [CurveRows::Geodesic, CurveRows::Asymptotic], [CurveRows::Asymptotic, pseudo]] {
+        let slope = CurveRows::Slope { axis: Vec3::new(0.2, 0.1, 1.0).normalize(), sin: 0.3 };
+        for curves in [[pseudo, pseudo], [CurveRows::Geodesic, CurveRows::Asymptotic], [CurveRows::Asymptotic, pseudo], [slope, pseudo], [slope, slope]] {
             for torsion_free in [false, true] {
                 let (problem, x) = problem(curves, torsion_free);
                 for b in 0..problem.block_count() {

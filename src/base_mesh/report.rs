@@ -8,7 +8,7 @@ use super::node_torsion::{node_rulings, polyline_rulings, NodeRuling, NodeTorsio
 use crate::curves::LevelCurve;
 use crate::field::Family;
 use crate::mesh::{FaceBvh, TriMesh, Vec3};
-use crate::quality::{polyline_family_angles, FamilyAngles};
+use crate::quality::{polyline_family_angles, CurveAngles, FamilyAngles, WorstPoint};
 use crate::strips::project_on;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -97,14 +97,24 @@ impl Reference {
     /// Each family of `net` measured at `targets_degrees` (in parallel, deterministic).
     pub fn family_angles(&self, net: &NetMesh, families: [Family; 2], targets_degrees: [f64; 2]) -> [FamilyAngles; 2] {
         let normals: Vec<Vec3> = net.positions().par_iter().map(|p| self.closest(p).1).collect();
-        [0, 1].map(|k| polyline_family_angles(&Self::curves(net, k, &normals), target_family(families[k], targets_degrees[k]), self.diagonal))
+        self.families_with(net, families, targets_degrees, &normals)
+    }
+
+    /// Each family of `net` measured at `targets_degrees` with the reference's `normals` at its
+    /// vertices: pseudo-geodesics, geodesics and asymptotic curves by their binormals
+    /// ([`polyline_family_angles`]), constant slopes by their segments ([`slope_angles`]).
+    fn families_with(&self, net: &NetMesh, families: [Family; 2], targets_degrees: [f64; 2], normals: &[Vec3]) -> [FamilyAngles; 2] {
+        [0, 1].map(|k| match target_family(families[k], targets_degrees[k]) {
+            slope @ Family::ConstantSlope { slope_degrees, .. } => slope_angles(net, k, &slope.slope_axis().unwrap_or_else(Vec3::z), slope_degrees),
+            family => polyline_family_angles(&Self::curves(net, k, normals), family, self.diagonal),
+        })
     }
 
     /// Measures `net` for the families `families` at the targets `targets_degrees`.
     pub fn measure(&self, net: &NetMesh, families: [Family; 2], targets_degrees: [f64; 2]) -> Measures {
         let closest: Vec<(Vec3, Vec3, f64)> = net.positions().par_iter().map(|p| self.closest(p)).collect();
         let normals: Vec<Vec3> = closest.iter().map(|c| c.1).collect();
-        let family_angles = [0, 1].map(|k| polyline_family_angles(&Self::curves(net, k, &normals), target_family(families[k], targets_degrees[k]), self.diagonal));
+        let family_angles = self.families_with(net, families, targets_degrees, &normals);
         let mut deviation = Deviation::default();
         let mut squares = 0.0;
         for (v, &(_, _, distance)) in closest.iter().enumerate() {
@@ -122,12 +132,48 @@ impl Reference {
     }
 }
 
-/// `family` with its angle read along the polylines' direction.
+/// `family` with its angle (or slope) read along the polylines' direction.
 pub(crate) fn target_family(family: Family, target_degrees: f64) -> Family {
     match family {
         Family::PseudoGeodesic { .. } => Family::PseudoGeodesic { theta_degrees: target_degrees },
+        Family::ConstantSlope { axis, free_slope, .. } => Family::ConstantSlope { axis, slope_degrees: target_degrees, free_slope },
         other => other,
     }
+}
+
+/// The slope `asin(ê·a)` of every segment of family `k`'s polylines (along their direction)
+/// against `slope_degrees`: one measured value per segment, the worst at its midpoint.
+fn slope_angles(net: &NetMesh, k: usize, axis: &Vec3, slope_degrees: f64) -> FamilyAngles {
+    let p = net.positions();
+    let mut angles = FamilyAngles::default();
+    let mut squares = 0.0;
+    for (index, line) in net.polylines(k).iter().enumerate() {
+        let mut curve = CurveAngles { length: line.windows(2).map(|w| (p[w[1] as usize] - p[w[0] as usize]).norm()).sum(), ..CurveAngles::default() };
+        let mut curve_squares = 0.0;
+        for w in line.windows(2) {
+            let (a, b) = (p[w[0] as usize], p[w[1] as usize]);
+            let measured = (b - a).normalize().dot(axis).clamp(-1.0, 1.0).asin().to_degrees();
+            let error = (measured - slope_degrees).abs();
+            curve.measured += 1;
+            curve_squares += error * error;
+            curve.max_error_degrees = curve.max_error_degrees.max(error);
+            if angles.worst.is_none_or(|w| error > w.error_degrees) {
+                let middle = (a + b) * 0.5;
+                angles.worst = Some(WorstPoint { curve: index, point: [middle.x, middle.y, middle.z], error_degrees: error, measured_degrees: measured });
+            }
+        }
+        if curve.measured > 0 {
+            curve.rms_error_degrees = (curve_squares / curve.measured as f64).sqrt();
+        }
+        squares += curve_squares;
+        angles.measured += curve.measured;
+        angles.max_error_degrees = angles.max_error_degrees.max(curve.max_error_degrees);
+        angles.curves.push(curve);
+    }
+    if angles.measured > 0 {
+        angles.rms_error_degrees = (squares / angles.measured as f64).sqrt();
+    }
+    angles
 }
 
 impl BaseMeshReport {

@@ -7,7 +7,7 @@ use super::node_torsion::NodeRuling;
 use super::params::BaseMeshParams;
 use super::problem::{vec3, Anchor, BaseMeshProblem, CurveRows};
 use super::report::{target_family, BaseMeshReport, Measures, Reference};
-use super::start::{initialise_auxiliaries, oriented_target};
+use super::start::{initialise_auxiliaries, mirror_degrees, oriented_target};
 use super::strips::net_strips;
 use crate::field::Family;
 use crate::mesh::{TriMesh, Vec3};
@@ -23,22 +23,24 @@ use rayon::prelude::*;
 /// Works on a copy of the net scaled to mean segment length 1 (the weights are meant for that
 /// scale); everything handed back is in the caller's units.
 pub struct BaseMeshSolver {
-    reference: Reference,
+    /// The net as given (the caller's units), for saving the session.
+    pub(super) given: NetMesh,
+    pub(super) reference: Reference,
     /// Internal lengths = caller lengths × `scale`.
-    scale: f64,
-    problem: BaseMeshProblem,
-    lm: LevenbergMarquardt,
-    params: BaseMeshParams,
-    x: Vec<f64>,
-    targets_degrees: [f64; 2],
-    iterations: usize,
-    converged: bool,
-    initial: BaseMeshReport,
-    last_report: BaseMeshReport,
-    measures: Measures,
+    pub(super) scale: f64,
+    pub(super) problem: BaseMeshProblem,
+    pub(super) lm: LevenbergMarquardt,
+    pub(super) params: BaseMeshParams,
+    pub(super) x: Vec<f64>,
+    pub(super) targets_degrees: [f64; 2],
+    pub(super) iterations: usize,
+    pub(super) converged: bool,
+    pub(super) initial: BaseMeshReport,
+    pub(super) last_report: BaseMeshReport,
+    pub(super) measures: Measures,
     /// Vertices found past the reference's boundary once: their tangential offset is held from
     /// then on (released, they would slide out again, and the solve would cycle).
-    held: Vec<bool>,
+    pub(super) held: Vec<bool>,
 }
 
 impl BaseMeshSolver {
@@ -51,15 +53,13 @@ impl BaseMeshSolver {
     pub fn new(net: &NetMesh, reference: &TriMesh, mut params: BaseMeshParams) -> Result<BaseMeshSolver, BaseMeshError> {
         params.validate()?;
         params.families = params.families.map(Family::by_name);
-        if !(0..net.vertex_count()).any(|v| net.along(v, 0).inner().is_some() || net.along(v, 1).inner().is_some()) {
+        if !has_inner_vertex(net) {
             return Err(BaseMeshError::NothingToOptimise);
         }
         let reference = Reference::new(reference);
-        let segments: Vec<f64> = (0..2).flat_map(|k| net.segments(k).map(|[a, b]| (net.positions()[b as usize] - net.positions()[a as usize]).norm()).collect::<Vec<_>>()).collect();
-        let mean = segments.iter().sum::<f64>() / segments.len().max(1) as f64;
-        let scale = if mean > 0.0 && mean.is_finite() { 1.0 / mean } else { 1.0 };
+        let scale = unit_scale(net);
         let as_given = reference.family_angles(net, params.families, params.families.map(|f| f.theta_degrees()));
-        let mirrored = reference.family_angles(net, params.families, params.families.map(|f| 180.0 - f.theta_degrees()));
+        let mirrored = reference.family_angles(net, params.families, params.families.map(mirror_degrees));
         let targets_degrees = [0, 1].map(|k| oriented_target(params.families[k], &as_given[k], &mirrored[k]));
         let scaled = net.with_positions(net.positions().iter().map(|p| p * scale).collect());
         let measures = reference.measure(net, params.families, targets_degrees);
@@ -69,6 +69,7 @@ impl BaseMeshSolver {
         let mut report = BaseMeshReport::new(&measures, targets_degrees, params.tolerance_degrees);
         report.energy = energy(&problem, &x);
         Ok(BaseMeshSolver {
+            given: net.clone(),
             reference,
             scale,
             problem,
@@ -133,6 +134,12 @@ impl BaseMeshSolver {
         &self.initial
     }
 
+    /// The net as given to [`BaseMeshSolver::new`], in the caller's units: what the optimisation
+    /// started from.
+    pub fn given_net(&self) -> &NetMesh {
+        &self.given
+    }
+
     /// The net at the current positions, in the caller's units.
     pub fn net(&self) -> NetMesh {
         self.problem.net().with_positions(self.positions())
@@ -151,7 +158,8 @@ impl BaseMeshSolver {
 
     /// Each family's rectifying strips of `width` on the current net (the developable strip of
     /// planar quads fitted to the common node rulings, [`super::node_torsion`]), judged against
-    /// the reference at each family's target with `tolerance_degrees`.
+    /// the reference at each family's target angle with `tolerance_degrees` (a constant-slope
+    /// family's strips each at their own mean angle).
     /// Errors: `InvalidParameter` for a width or tolerance that is not finite and positive.
     pub fn strips(&self, width: f64, tolerance_degrees: f64) -> Result<[StripPattern; 2], BaseMeshError> {
         if !(width.is_finite() && width > 0.0) {
@@ -161,7 +169,10 @@ impl BaseMeshSolver {
             return Err(BaseMeshError::InvalidParameter { name: "tolerance_degrees", message: format!("must lie in (0°, 180°), got {tolerance_degrees}") });
         }
         let net = self.net();
-        let thetas = [0, 1].map(|k| target_family(self.params.families[k], self.targets_degrees[k]).theta_degrees());
+        let thetas = [0, 1].map(|k| match self.params.families[k] {
+            Family::ConstantSlope { .. } => None,
+            family => Some(target_family(family, self.targets_degrees[k]).theta_degrees()),
+        });
         Ok(net_strips(&net, &self.reference, &self.measures.rulings, width, thetas, tolerance_degrees))
     }
 
@@ -193,6 +204,23 @@ const BEYOND_BOUNDARY: f64 = 0.5;
 /// Offsets below this (in mean segment lengths) are rounding: a vertex on the reference.
 const MIN_OFFSET: f64 = 1e-6;
 
+/// Whether some vertex of `net` lies inside a polyline: has a curve to hold to its family.
+pub(super) fn has_inner_vertex(net: &NetMesh) -> bool {
+    (0..net.vertex_count()).any(|v| net.along(v, 0).inner().is_some() || net.along(v, 1).inner().is_some())
+}
+
+/// Internal lengths per caller length: the inverse of the mean segment length of `net` (1 for a
+/// degenerate mean).
+pub(super) fn unit_scale(net: &NetMesh) -> f64 {
+    let segments: Vec<f64> = (0..2).flat_map(|k| net.segments(k).map(|[a, b]| (net.positions()[b as usize] - net.positions()[a as usize]).norm()).collect::<Vec<_>>()).collect();
+    let mean = segments.iter().sum::<f64>() / segments.len().max(1) as f64;
+    if mean > 0.0 && mean.is_finite() {
+        1.0 / mean
+    } else {
+        1.0
+    }
+}
+
 /// The problem, its solver and its start for the scaled `net`: the families alone, or with
 /// torsion-free nodes (rulings started from the strips of `measures`).
 fn stage(
@@ -205,16 +233,31 @@ fn stage(
     measures: &Measures,
     held: &mut [bool],
 ) -> Result<(BaseMeshProblem, LevenbergMarquardt, Vec<f64>), BaseMeshError> {
-    let curves = [0, 1].map(|k| CurveRows::new(params.families[k], targets_degrees[k]));
-    let anchors = anchors(reference, &net, scale, held);
-    let problem = BaseMeshProblem::new(net, curves, torsion_free, params.weights, anchors.clone());
-    let lm = LevenbergMarquardt::new(&problem, params.lm.clone())?;
+    let (problem, lm) = assemble(reference, net, scale, params, targets_degrees, torsion_free, held)?;
     let mut x = vec![0.0; problem.variable_count()];
     for (v, p) in problem.net().positions().iter().enumerate() {
         x[3 * v..3 * v + 3].copy_from_slice(p.as_slice());
     }
-    initialise_auxiliaries(&problem, &anchors, &measures.rulings, &mut x);
+    initialise_auxiliaries(&problem, &problem.anchors, &measures.rulings, &mut x);
     Ok((problem, lm, x))
+}
+
+/// The problem on the scaled `net` (its positions the pull target) and its solver, without a
+/// start: the families alone, or with torsion-free nodes.
+pub(super) fn assemble(
+    reference: &Reference,
+    net: NetMesh,
+    scale: f64,
+    params: &BaseMeshParams,
+    targets_degrees: [f64; 2],
+    torsion_free: bool,
+    held: &mut [bool],
+) -> Result<(BaseMeshProblem, LevenbergMarquardt), BaseMeshError> {
+    let curves = [0, 1].map(|k| CurveRows::new(params.families[k], targets_degrees[k]));
+    let anchors = anchors(reference, &net, scale, held);
+    let problem = BaseMeshProblem::new(net, curves, torsion_free, params.weights, anchors);
+    let lm = LevenbergMarquardt::new(&problem, params.lm.clone())?;
+    Ok((problem, lm))
 }
 
 /// The reference's closest point and normal for every vertex of the scaled `net` (in parallel,

@@ -9,13 +9,23 @@ use crate::field::Family;
 use crate::mesh::Vec3;
 use crate::quality::FamilyAngles;
 
-/// Of `θ` and `180° − θ`, the angle the measured family is nearer to: the polylines of a net
-/// have no preferred direction, and a family read backwards has the mirror angle.
-pub(crate) fn oriented_target(family: Family, measured: &FamilyAngles, measured_mirror: &FamilyAngles) -> f64 {
-    let theta = family.theta_degrees();
+/// The target of `family` read along polylines of the other direction: `180° − θ` for
+/// pseudo-geodesics, `−β` for a slope; geodesics and asymptotic curves read the same both ways.
+pub(crate) fn mirror_degrees(family: Family) -> f64 {
     match family {
-        Family::PseudoGeodesic { .. } if measured_mirror.rms_error_degrees < measured.rms_error_degrees => 180.0 - theta,
-        _ => theta,
+        Family::PseudoGeodesic { theta_degrees } => 180.0 - theta_degrees,
+        Family::ConstantSlope { slope_degrees, .. } => -slope_degrees,
+        other => other.theta_degrees(),
+    }
+}
+
+/// Of the family's target and its [`mirror_degrees`], the one the measured family is nearer to:
+/// the polylines of a net have no preferred direction.
+pub(crate) fn oriented_target(family: Family, measured: &FamilyAngles, measured_mirror: &FamilyAngles) -> f64 {
+    if measured_mirror.rms_error_degrees < measured.rms_error_degrees {
+        mirror_degrees(family)
+    } else {
+        family.theta_degrees()
     }
 }
 

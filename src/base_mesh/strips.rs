@@ -9,9 +9,10 @@ use crate::mesh::Vec3;
 use crate::strips::{discrete_binormals, strip_with_rulings, PatternMetrics, SkippedCurve, StripLines, StripPattern, StripWarning, SurfaceProjector, Verdict};
 
 /// Each family's strips of `width` on `net` with the fitted `rulings`, judged at the angles
-/// `thetas` (along the polylines' direction) with `tolerance_degrees`. A strip's `curve` and
-/// `level` are its polyline's index.
-pub(crate) fn net_strips(net: &NetMesh, reference: &Reference, rulings: &PolylineRulings, width: f64, thetas: [f64; 2], tolerance_degrees: f64) -> [StripPattern; 2] {
+/// `thetas` (along the polylines' direction) with `tolerance_degrees`; a family without one (a
+/// constant slope prescribes no angle) has each strip judged at its own mean angle. A strip's
+/// `curve` and `level` are its polyline's index.
+pub(crate) fn net_strips(net: &NetMesh, reference: &Reference, rulings: &PolylineRulings, width: f64, thetas: [Option<f64>; 2], tolerance_degrees: f64) -> [StripPattern; 2] {
     let projector = SurfaceProjector::new(&reference.mesh);
     [0, 1].map(|k| {
         let (mut strips, mut skipped) = (Vec::new(), Vec::new());
@@ -22,12 +23,13 @@ pub(crate) fn net_strips(net: &NetMesh, reference: &Reference, rulings: &Polylin
                 skipped.push(SkippedCurve { curve: index, warnings: vec![warning] });
                 continue;
             };
-            let (sin, cos) = thetas[k].to_radians().sin_cos();
+            let normals: Vec<Vec3> = centre.iter().map(|c| reference.closest(c).1).collect();
+            let theta = thetas[k].unwrap_or_else(|| mean_angle(&centre, &normals));
+            let (sin, cos) = theta.to_radians().sin_cos();
             let targets: Vec<Vec3> = (0..centre.len())
                 .map(|i| {
-                    let normal = reference.closest(&centre[i]).1;
                     let tangent = (centre[(i + 1).min(centre.len() - 1)] - centre[i.saturating_sub(1)]).try_normalize(0.0).unwrap_or_else(Vec3::zeros);
-                    normal * cos + normal.cross(&tangent) * sin
+                    normals[i] * cos + normals[i].cross(&tangent) * sin
                 })
                 .collect();
             let binormals: Vec<Vec3> = discrete_binormals(&centre)
@@ -38,7 +40,7 @@ pub(crate) fn net_strips(net: &NetMesh, reference: &Reference, rulings: &Polylin
             let toward: f64 = lines.iter().zip(&targets).map(|(d, t)| d.dot(t)).sum();
             let rulings: Vec<Vec3> = lines.iter().map(|d| if toward < 0.0 { -d } else { *d }).collect();
             let strip_lines = StripLines { curve: index, level: index as f64, centre, binormals, rulings };
-            let strip = strip_with_rulings(&projector, strip_lines, width, thetas[k], reference.diagonal, Vec::new());
+            let strip = strip_with_rulings(&projector, strip_lines, width, theta, reference.diagonal, Vec::new());
             if strip.is_finite() {
                 strips.push(strip);
             } else {
@@ -49,4 +51,20 @@ pub(crate) fn net_strips(net: &NetMesh, reference: &Reference, rulings: &Polylin
         let verdict = Verdict::judge(&strips, tolerance_degrees);
         StripPattern { strips, skipped, metrics, verdict }
     })
+}
+
+/// The mean signed angle (Sec. 3.1) between the discrete binormals of `centre` and `normals` at
+/// its inner vertices, 90° where none is defined.
+fn mean_angle(centre: &[Vec3], normals: &[Vec3]) -> f64 {
+    let angles: Vec<f64> = discrete_binormals(centre)
+        .iter()
+        .enumerate()
+        .filter_map(|(i, b)| {
+            let b = (*b)?;
+            let side = normals[i].cross(&(centre[i + 1] - centre[i - 1])).try_normalize(0.0)?;
+            let sign = if b.dot(&side) < 0.0 { -1.0 } else { 1.0 };
+            Some((sign * b.dot(&normals[i])).clamp(-1.0, 1.0).acos().to_degrees())
+        })
+        .collect();
+    if angles.is_empty() { 90.0 } else { angles.iter().sum::<f64>() / angles.len() as f64 }
 }

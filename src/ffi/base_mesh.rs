@@ -1,7 +1,7 @@
 //! `LmlBaseMesh`: a base-mesh optimisation session (paper Sec. 3.5, with the torsion-free nodes
 //! of Sec. 5.2.1, Eq. 21), stepped like `LmlField`: create from a net of rows and columns near a
 //! reference surface (given, or the quad net of an `LmlStripNet`), step until converged, read
-//! the positions, the nodes' ruling angles and each family's strips, free.
+//! the positions, the nodes' ruling angles and each family's strips, save and load, free.
 
 use super::failure::Failure;
 use super::guard::guarded;
@@ -122,6 +122,7 @@ impl From<BaseMeshError> for Failure {
     fn from(e: BaseMeshError) -> Failure {
         match e {
             BaseMeshError::Solver(error) => Failure::from(FieldError::Solver(error)),
+            corrupt @ (BaseMeshError::CorruptData { .. } | BaseMeshError::UnsupportedVersion { .. }) => Failure::new(LmlStatus::CorruptData, corrupt.to_string()),
             other => Failure::new(LmlStatus::InvalidArgument, other.to_string()),
         }
     }
@@ -254,6 +255,51 @@ pub unsafe extern "C" fn lml_base_mesh_free(base_mesh: *mut LmlBaseMesh) {
         unsafe { release(base_mesh) };
         Ok(LmlStatus::Ok)
     });
+}
+
+/// Serialises the whole session (the net as given, the reference surface, the families with
+/// their oriented targets, the stage and the net it started from, the positions with their
+/// auxiliary variables, the vertices held past the reference's boundary, solver damping, the
+/// initial and the last report) as bytes: the magic `"LMLB"`, a little-endian `uint32_t` format
+/// version, then the state. Portable across platforms; a restored session continues bit for bit
+/// as the original would have.
+///
+/// Two-call pattern: `*needed` is always set to the byte count; if `out` is NULL or `capacity`
+/// (in bytes) is smaller, nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned. The
+/// buffer stays owned by the caller.
+/// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT`.
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_save(base_mesh: *const LmlBaseMesh, out: *mut u8, capacity: usize, needed: *mut usize) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle; `out` writable for `capacity` bytes; writable `needed`.
+        let base_mesh = unsafe { handle(base_mesh, "base_mesh") }?;
+        unsafe { copy_out(&base_mesh.solver.to_bytes(), out, capacity, needed, "out") }
+    })
+}
+
+/// Restores a session from `length` bytes written by `lml_base_mesh_save` (copied; the caller
+/// keeps them). `out` receives the new session, owned by the caller (release with
+/// `lml_base_mesh_free`); set to NULL on failure.
+///
+/// Every restored quantity is checked: the net as in `lml_base_mesh_new` and the reference as in
+/// `lml_mesh_new`, the parameters in range (and at most 100 damped trials per iteration), each
+/// target the family's angle or that angle read backwards (θ or 180° − θ), the stage one the
+/// parameters lead to, every value finite, counters and damping in range, both reports about the
+/// net's vertices.
+///
+/// Returns `LML_STATUS_OK`; `LML_STATUS_CORRUPT_DATA` (empty, truncated, damaged or inconsistent
+/// bytes, another kind of session, or another format version: the message says which);
+/// `LML_STATUS_INVALID_ARGUMENT` (NULL `out`, NULL `bytes` with a non-zero length).
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_load(bytes: *const u8, length: usize, out: *mut *mut LmlBaseMesh) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): writable `out`; `bytes` readable for `length` bytes.
+        let mut out = unsafe { Out::new(out, "out") }?;
+        out.set(std::ptr::null_mut());
+        let bytes = unsafe { input(bytes, length, "bytes") }?;
+        out.set_owned(LmlBaseMesh { solver: BaseMeshSolver::from_bytes(bytes)? });
+        Ok(LmlStatus::Ok)
+    })
 }
 
 /// Runs at most `max_iterations` iterations (the reference's closest points found again before

@@ -3,7 +3,8 @@
  * its development, every vertex moved a little, stepped to convergence. Judged from outside: the
  * vertices back on the cylinder, geodesic against its exact normal, the nodes' ruling angles
  * recomputed from lml_base_mesh_nodes, the strips of both families made of planar quads whose
- * rulings agree at the nodes; every invalid input refused with a message naming it. */
+ * rulings agree at the nodes; a saved session restored and stepped in step with the original;
+ * every invalid input refused with a message naming it. */
 #include "check.h"
 #include "harness.h"
 
@@ -205,6 +206,63 @@ TWO_CALL_READER(strip_doubles, LmlStrips, double)
 TWO_CALL_READER(strip_indices, LmlStrips, uint32_t)
 TWO_CALL_READER(strip_offsets, LmlStrips, size_t)
 TWO_CALL_READER(strip_metrics, LmlStrips, LmlStripMetrics)
+TWO_CALL_READER(base_mesh_doubles, LmlBaseMesh, double)
+
+/* Saves `session`, restores it, and steps both five iterations: the same reports and positions,
+ * to the bit. Truncated and damaged bytes, a net session's magic, a future version and NULL
+ * arguments are refused. */
+static void save_and_restore(LmlBaseMesh *session)
+{
+    size_t size = 0, needed = 0, count[2] = {0, 0};
+    unsigned char *bytes;
+    LmlBaseMesh *restored = NULL;
+    LmlBaseMeshReport a, b;
+
+    CHECK_STATUS(lml_base_mesh_save(session, NULL, 0, &size), LML_STATUS_BUFFER_TOO_SMALL);
+    CHECK(size > 8);
+    CHECK_STATUS(lml_base_mesh_save(NULL, NULL, 0, &size), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_STATUS(lml_base_mesh_save(session, NULL, 0, NULL), LML_STATUS_INVALID_ARGUMENT);
+    bytes = malloc(size);
+    if (bytes == NULL) {
+        CHECK(!"out of memory");
+        return;
+    }
+    CHECK_STATUS(lml_base_mesh_save(session, bytes, size - 1, &needed), LML_STATUS_BUFFER_TOO_SMALL);
+    CHECK_STATUS(lml_base_mesh_save(session, bytes, size, &needed), LML_STATUS_OK);
+    CHECK(needed == size && memcmp(bytes, "LMLB", 4) == 0);
+    CHECK_STATUS(lml_base_mesh_load(bytes, size, &restored), LML_STATUS_OK);
+    if (restored != NULL) {
+        double *mine, *theirs;
+        LmlStatus original = lml_base_mesh_step(session, 5, &a);
+        CHECK_STATUS(lml_base_mesh_step(restored, 5, &b), original);
+        CHECK(memcmp(&a, &b, sizeof a) == 0 && a.iterations == 8);
+        mine = base_mesh_doubles(lml_base_mesh_positions, session, &count[0]);
+        theirs = base_mesh_doubles(lml_base_mesh_positions, restored, &count[1]);
+        CHECK(mine != NULL && theirs != NULL && count[0] == count[1] && memcmp(mine, theirs, count[0] * sizeof(double)) == 0);
+        free(mine);
+        free(theirs);
+        lml_base_mesh_free(restored);
+    }
+    restored = NULL;
+    CHECK_STATUS(lml_base_mesh_load(bytes, size - 1, &restored), LML_STATUS_CORRUPT_DATA);
+    CHECK(restored == NULL);
+    CHECK_STATUS(lml_base_mesh_load(bytes, 0, &restored), LML_STATUS_CORRUPT_DATA);
+    bytes[12] ^= 0xFF; /* the count of the net's vertices, now far beyond the bytes */
+    CHECK_STATUS(lml_base_mesh_load(bytes, size, &restored), LML_STATUS_CORRUPT_DATA);
+    CHECK(restored == NULL);
+    bytes[12] ^= 0xFF;
+    bytes[3] = 'N'; /* "LMLN": a net session's magic */
+    CHECK_STATUS(lml_base_mesh_load(bytes, size, &restored), LML_STATUS_CORRUPT_DATA);
+    CHECK_MESSAGE("not a Lamella base-mesh session");
+    bytes[3] = 'B';
+    bytes[4] = 2;
+    CHECK_STATUS(lml_base_mesh_load(bytes, size, &restored), LML_STATUS_CORRUPT_DATA);
+    CHECK_MESSAGE("version 2");
+    CHECK_STATUS(lml_base_mesh_load(NULL, 5, &restored), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_STATUS(lml_base_mesh_load(bytes, size, NULL), LML_STATUS_INVALID_ARGUMENT);
+    CHECK(restored == NULL);
+    free(bytes);
+}
 
 /* One family's strips on the optimised net, read whole. */
 typedef struct {
@@ -403,6 +461,8 @@ void test_base_mesh(void)
     CHECK(initial.iterations == 0 && initial.target_degrees[0] == 90.0 && initial.target_degrees[1] == 90.0);
     CHECK(!initial.torsion_free && initial.node_count > 0);
     CHECK_STATUS(lml_base_mesh_step(NULL, 1, &report), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_STATUS(lml_base_mesh_step(session, 3, NULL), LML_STATUS_MORE);
+    save_and_restore(session);
     while (status == LML_STATUS_MORE && steps * 10 < BUDGET) {
         status = lml_base_mesh_step(session, 10, &report);
         steps++;

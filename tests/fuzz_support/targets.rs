@@ -6,6 +6,7 @@ use crate::field_files::{field_csv, parse_field_csv};
 use crate::mesh_support::{folded, obj_text as soup_obj, sliver_grid};
 use crate::guides::{guides_json, parse_guides_json, trace_guides};
 use crate::strokes_file::parse_strokes;
+use lamella::base_mesh::{BaseMeshParams, BaseMeshSolver, NetMesh};
 use lamella::curves::{extract_level_curves, uniform_levels};
 use lamella::ffi::*;
 use lamella::field::{Family, FieldParams, FieldSolver, FIELD_VALUE_LIMIT};
@@ -13,7 +14,7 @@ use lamella::initialisation::{field_from_guide_curves, field_from_strokes, Guide
 use lamella::mesh::{TriMesh, Vec3};
 use lamella::net::{NetParams, NetSolver};
 use lamella::reshape::{ReshapeParams, ReshapeSolver};
-use lamella::surfaces::hall_roof;
+use lamella::surfaces::{cylinder_patch, hall_roof, CylinderPatch};
 use std::ffi::CStr;
 use std::sync::OnceLock;
 
@@ -29,6 +30,7 @@ pub fn all() -> Vec<Target> {
         Target { name: "session", text: false, seeds: session_seeds, run: session },
         Target { name: "reshape_session", text: false, seeds: reshape_session_seeds, run: reshape_session },
         Target { name: "net_session", text: false, seeds: net_session_seeds, run: net_session },
+        Target { name: "base_mesh_session", text: false, seeds: base_mesh_session_seeds, run: base_mesh_session },
         Target { name: "field_csv", text: true, seeds: field_csv_seeds, run: field_csv_target },
         Target { name: "strokes", text: true, seeds: strokes_seeds, run: strokes },
         Target { name: "guides", text: true, seeds: guides_seeds, run: guides },
@@ -193,6 +195,52 @@ fn net_session(input: &[u8]) -> Verdict {
         load: |b| NetSolver::from_bytes(b).map_err(|e| e.to_string()),
         save: NetSolver::to_bytes,
         finite: |s| s.fields().iter().flatten().all(|f| f.is_finite() && f.abs() <= FIELD_VALUE_LIMIT),
+        step: |s| stepped(s.step(1), |r| r.converged),
+    }
+    .run(input)
+}
+
+/// Five rows and five columns of ±45° helices on a small cylinder patch (about 60 vertices),
+/// each vertex moved a little, and the patch.
+fn helix_net() -> (NetMesh, TriMesh) {
+    let radius = 2.0;
+    let surface = cylinder_patch(&CylinderPatch { radius, span: 2.0, height: 4.0, target_vertices: 60, irregularity: 0.2, seed: 3 });
+    let surface = surface.expect("a valid patch").into_mesh().expect("a valid mesh");
+    let positions = (0..25)
+        .map(|v| {
+            let (i, j) = (f64::from(v / 5), f64::from(v % 5));
+            let (s, z) = (1.0 + 0.25 * (i + j), 2.0 + 0.25 * (j - i));
+            let wobble = 0.02 * (3.7 * f64::from(v)).sin();
+            Vec3::new(radius * (s / radius).cos() + wobble, radius * (s / radius).sin(), z - wobble)
+        })
+        .collect();
+    let rows = (0..5).map(|i| (0..5).map(|j| 5 * i + j).collect()).collect();
+    let columns = (0..5).map(|j| (0..5).map(|i| 5 * i + j).collect()).collect();
+    (NetMesh::new(positions, rows, columns).expect("a valid net"), surface)
+}
+
+fn base_mesh_session_seeds() -> Vec<Vec<u8>> {
+    let (net, surface) = helix_net();
+    let mut geodesic = BaseMeshParams::new(Family::Geodesic, Family::Geodesic);
+    geodesic.torsion_free = true;
+    let mut solver = BaseMeshSolver::new(&net, &surface, geodesic.clone()).expect("a base-mesh session on the patch");
+    let mut seeds = vec![solver.to_bytes()];
+    solver.step(2).expect("two steps");
+    seeds.push(solver.to_bytes());
+    // The torsion-free rows on from the start, and a pseudo-geodesic family.
+    let at_once = BaseMeshParams { families_first: false, ..geodesic };
+    seeds.push(BaseMeshSolver::new(&net, &surface, at_once).expect("torsion-free at once").to_bytes());
+    let pseudo = BaseMeshParams::new(Family::PseudoGeodesic { theta_degrees: 60.0 }, Family::Geodesic);
+    seeds.push(BaseMeshSolver::new(&net, &surface, pseudo).expect("a pseudo-geodesic family").to_bytes());
+    seeds
+}
+
+fn base_mesh_session(input: &[u8]) -> Verdict {
+    SessionChecks {
+        what: "base-mesh",
+        load: |b| BaseMeshSolver::from_bytes(b).map_err(|e| e.to_string()),
+        save: BaseMeshSolver::to_bytes,
+        finite: |s| s.positions().iter().all(|p| p.iter().all(|v| v.is_finite())),
         step: |s| stepped(s.step(1), |r| r.converged),
     }
     .run(input)

@@ -74,7 +74,7 @@ pub(crate) fn helix_net(noise: f64) -> (NetMesh, TriMesh) {
 /// The cone `z = a r` of the spiral nets.
 const CONE: f64 = 0.6;
 /// Inclination of the spirals against the horizontal planes (below the cone's 31°).
-const SPIRAL_SLOPE_DEGREES: f64 = 20.0;
+pub(crate) const SPIRAL_SLOPE_DEGREES: f64 = 20.0;
 
 fn cone_point(r: f64, phi: f64) -> Vec3 {
     Vec3::new(r * phi.cos(), r * phi.sin(), CONE * r)
@@ -87,7 +87,7 @@ fn cone_normal(p: &Vec3) -> Vec3 {
 }
 
 /// The cone for `r` in [3.5, 12.5], `φ` in [−1.3, 1.3], as a triangulated grid.
-fn cone_surface() -> TriMesh {
+pub(crate) fn cone_surface() -> TriMesh {
     let (nr, nphi) = (46usize, 70usize);
     let mut positions = Vec::new();
     for i in 0..nr {
@@ -112,7 +112,7 @@ fn cone_surface() -> TriMesh {
 /// in each coordinate. On a cone each family is a family of pseudo-geodesics of one angle (the
 /// cone is self-similar along them), and both share the vertical as the ruling of their
 /// rectifying developables (Sec. 5.2.2), a torsion-free PP net.
-fn spiral_net(noise: f64) -> NetMesh {
+pub(crate) fn spiral_net(noise: f64) -> NetMesh {
     let s = SPIRAL_SLOPE_DEGREES.to_radians().sin();
     // Along a spiral dz/ds = sin β with z = a r: dr/ds = s/a, and r dφ/ds = √(1 − (1 + a²) s²/a²).
     let c = CONE * (1.0 - (1.0 + CONE * CONE) * s * s / (CONE * CONE)).sqrt() / s;
@@ -284,7 +284,7 @@ fn the_optimisation_gives_the_same_bits_on_any_number_of_threads() {
 #[test]
 fn bad_requests_are_refused_by_name() {
     let (net, surface) = helix_net(0.0);
-    let slope = Family::ConstantSlope { axis: [0.0, 0.0, 1.0], slope_degrees: 20.0, free_slope: false };
+    let slope = Family::ConstantSlope { axis: [0.0, 0.0, 1.0], slope_degrees: 20.0, free_slope: true };
     let error = BaseMeshSolver::new(&net, &surface, BaseMeshParams::new(slope, Family::Geodesic)).err().unwrap();
     assert!(matches!(error, BaseMeshError::InvalidParameter { name: "families", .. }), "{error}");
     let mut params = BaseMeshParams::new(Family::Geodesic, Family::Geodesic);
@@ -296,4 +296,45 @@ fn bad_requests_are_refused_by_name() {
     assert_eq!(BaseMeshSolver::new(&pairs, &surface, BaseMeshParams::new(Family::Geodesic, Family::Geodesic)).err(), Some(BaseMeshError::NothingToOptimise));
     let solver = BaseMeshSolver::new(&net, &surface, BaseMeshParams::new(Family::Geodesic, Family::Geodesic)).unwrap();
     assert!(solver.strips(f64::INFINITY, 1.0).unwrap_err().to_string().contains("width"));
+}
+
+#[test]
+fn a_perturbed_net_of_spirals_optimised_for_constant_slope_gets_vertical_node_axes() {
+    let net = spiral_net(0.01);
+    let surface = cone_surface();
+    let slope = Family::ConstantSlope { axis: [0.0, 0.0, 1.0], slope_degrees: SPIRAL_SLOPE_DEGREES, free_slope: false };
+    let mut solver = BaseMeshSolver::new(&net, &surface, BaseMeshParams::new(slope, slope)).unwrap();
+    assert!(solver.initial_report().node_torsion.max_degrees > 10.0, "{:?}", solver.initial_report().node_torsion);
+    converge(&mut solver, 400);
+    let report = solver.report().clone();
+    assert!(report.families_met && report.torsion_free, "{report:?}");
+    // From outside: every segment at the slope, the net on the cone, the strips' rulings (fitted
+    // to the polylines alone) vertical and shared at the nodes: parallel node axes (Sec. 5.2.2).
+    let optimised = solver.net();
+    for k in 0..2 {
+        let target = report.targets_degrees[k];
+        assert!((target.abs() - SPIRAL_SLOPE_DEGREES).abs() < 1e-9, "family {k} held at {target}°");
+        for line in optimised.polylines(k) {
+            for w in line.windows(2) {
+                let e = (optimised.positions()[w[1] as usize] - optimised.positions()[w[0] as usize]).normalize();
+                let measured = e.z.asin().to_degrees();
+                assert!((measured - target).abs() <= 0.5, "family {k}: a segment at {measured}°, not {target}°");
+            }
+        }
+    }
+    for p in optimised.positions() {
+        let r = p.x.hypot(p.y);
+        assert!((p.z - CONE * r).abs() * cone_normal(p).z <= 1e-3 * 12.0, "{p:?} off the cone");
+    }
+    let strips = solver.strips(0.3, 1.0).unwrap();
+    let (planarity, shared) = strips_planarity_and_shared_rulings(&optimised, &strips);
+    assert!(planarity < 1e-9 && shared <= TORSION_FREE_DEGREES, "planarity {planarity}, rulings {shared}° apart at a node");
+    for pattern in &strips {
+        assert!(pattern.strips.len() >= 10, "{} strips", pattern.strips.len());
+        for strip in &pattern.strips {
+            for d in &strip.rulings[1..strip.rulings.len() - 1] {
+                assert!(d.z.abs() >= 0.5f64.to_radians().cos(), "a ruling {d:?} is not vertical");
+            }
+        }
+    }
 }

@@ -1,8 +1,10 @@
 //! `lamella optimise` (paper Sec. 3.5, Eq. 21) on a perturbed net of ±45° helices of a cylinder:
 //! the optimised net.obj read back and checked against the cylinder, nodes.csv and report.json
-//! against it, exit 3 when a family misses the tolerance, bad input refused by name.
+//! against it, exit 3 when a family misses the tolerance, bad input refused by name; a run resumed
+//! from its optimise.bin ends where an uninterrupted one does; a net of spirals on a cone
+//! optimised for constant slope gets vertical node axes.
 
-use crate::base_mesh_optimisation::{helix_net, polyline_angles, HELIX_RADIUS};
+use crate::base_mesh_optimisation::{cone_surface, helix_net, polyline_angles, spiral_net, HELIX_RADIUS, SPIRAL_SLOPE_DEGREES};
 use crate::cli_support::{assert_bad_input, lamella, read_json, stderr, Scratch};
 use lamella::base_mesh::NetMesh;
 use lamella::mesh::Vec3;
@@ -11,6 +13,12 @@ use std::fmt::Write as _;
 /// Writes the perturbed helix net as net.obj and its cylinder as cyl.obj into `dir`.
 fn helix_files(dir: &Scratch) {
     let (net, surface) = helix_net(0.02);
+    write_net(dir, "net.obj", &net);
+    surface.write_obj(std::fs::File::create(dir.path("cyl.obj")).expect("create")).expect("write cylinder");
+}
+
+/// Writes `net` as the net.obj `name` into `dir`, written here.
+fn write_net(dir: &Scratch, name: &str, net: &NetMesh) {
     let mut text = String::new();
     for p in net.positions() {
         let _ = writeln!(text, "v {} {} {}", p.x, p.y, p.z);
@@ -21,8 +29,7 @@ fn helix_files(dir: &Scratch) {
             let _ = writeln!(text, "l {}", line.iter().map(|v| (v + 1).to_string()).collect::<Vec<_>>().join(" "));
         }
     }
-    std::fs::write(dir.path("net.obj"), text).expect("write net");
-    surface.write_obj(std::fs::File::create(dir.path("cyl.obj")).expect("create")).expect("write cylinder");
+    std::fs::write(dir.path(name), text).expect("write net");
 }
 
 /// The vertices, rows and columns of a net.obj, parsed here.
@@ -93,4 +100,59 @@ fn optimise_refuses_bad_input_by_name() {
     assert_bad_input(&dir.0, &["optimise", "--net", "far.obj", "--types", "G,G", "--reference", "cyl.obj"], &["far.obj", "line 4", "not a vertex"]);
     assert_bad_input(&dir.0, &["optimise", "--net", "net.obj", "--types", "P200,G", "--reference", "cyl.obj"], &["--types", "P200"]);
     assert_bad_input(&dir.0, &["optimise", "--net", "net.obj", "--types", "G,G", "--reference", "cyl.obj", "--width=-1"], &["width"]);
+}
+
+#[test]
+fn a_resumed_optimisation_ends_where_an_uninterrupted_one_does() {
+    let dir = Scratch::new("optimise_resume");
+    helix_files(&dir);
+    let run = |args: &[&str]| {
+        let output = lamella(&dir.0, &[args, &["--quiet"][..]].concat());
+        assert!(matches!(output.status.code(), Some(0 | 3)), "{}", stderr(&output));
+    };
+    let new = ["optimise", "--net", "net.obj", "--types", "G,G", "--torsion-free", "--reference", "cyl.obj"];
+    run(&[&new[..], &["--max-iterations", "10", "--out", "whole"]].concat());
+    run(&[&new[..], &["--max-iterations", "4", "--out", "first"]].concat());
+    run(&["optimise", "--resume", "first/optimise.bin", "--max-iterations", "10", "--out", "rest"]);
+    let read = |path: &str| std::fs::read(dir.path(path)).expect(path);
+    assert_eq!(read_json(&dir.path("first/report.json"))["final"]["iterations"].as_u64(), Some(4));
+    assert_eq!(read_json(&dir.path("rest/report.json"))["final"]["iterations"].as_u64(), Some(10));
+    assert_eq!(read_json(&dir.path("rest/report.json"))["initial"], read_json(&dir.path("whole/report.json"))["initial"]);
+    for file in ["net.obj", "nodes.csv", "strips_0.obj", "strips_1.obj"] {
+        assert!(read(&format!("rest/{file}")) == read(&format!("whole/{file}")), "{file} differs");
+    }
+    assert_bad_input(&dir.0, &["optimise", "--resume", "net.obj", "--out", "x"], &["net.obj", "not a usable base-mesh session"]);
+    let clash = lamella(&dir.0, &["optimise", "--resume", "first/optimise.bin", "--types", "G,G", "--out", "y"]);
+    assert_eq!(clash.status.code(), Some(2), "{}", stderr(&clash));
+}
+
+#[test]
+fn optimise_for_constant_slope_gives_every_node_the_axis() {
+    let dir = Scratch::new("optimise_slope");
+    write_net(&dir, "spirals.obj", &spiral_net(0.01));
+    cone_surface().write_obj(std::fs::File::create(dir.path("cone.obj")).expect("create")).expect("write cone");
+    let slope = format!("S{SPIRAL_SLOPE_DEGREES}");
+    let types = format!("{slope},{slope}");
+    let output = lamella(&dir.0, &["optimise", "--net", "spirals.obj", "--types", &types, "--axis", "0,0,2", "--reference", "cone.obj", "--out", "d"]);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    let net = read_net(&dir.path("d/net.obj"));
+    for k in 0..2 {
+        for line in net.polylines(k) {
+            for w in line.windows(2) {
+                let e = (net.positions()[w[1] as usize] - net.positions()[w[0] as usize]).normalize();
+                let slope = e.z.asin().to_degrees().abs();
+                assert!((slope - SPIRAL_SLOPE_DEGREES).abs() <= 0.5, "family {k}: a segment at {slope}°");
+            }
+        }
+    }
+    let nodes = std::fs::read_to_string(dir.path("d/nodes.csv")).expect("nodes.csv");
+    let mut count = 0;
+    for line in nodes.lines().skip(1) {
+        let cells: Vec<f64> = line.split(',').map(|c| c.parse().expect("every node defined")).collect();
+        assert!(cells[4] <= 0.5 && cells[7].abs() >= 0.5f64.to_radians().cos(), "node {line}: not a vertical axis shared by both strips");
+        count += 1;
+    }
+    assert!(count > 100, "{count} nodes");
+    assert_bad_input(&dir.0, &["optimise", "--net", "spirals.obj", "--types", &types, "--axis", "0,0,0", "--reference", "cone.obj"], &["--axis"]);
+    assert_bad_input(&dir.0, &["optimise", "--net", "spirals.obj", "--types", "S95,G", "--reference", "cone.obj"], &["--types", "S95"]);
 }

@@ -89,3 +89,4 @@ mod tracing_seeding;
 
 mod view_page;
 mod base_mesh_optimisation;
+mod base_mesh_session;

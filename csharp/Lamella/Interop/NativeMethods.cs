@@ -149,6 +149,10 @@ namespace Lamella.Interop
         public static extern Status lml_base_mesh_nodes(BaseMeshHandle baseMesh, [Out] BaseMeshNodeRecord[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_base_mesh_strips(BaseMeshHandle baseMesh, uint k, double width, double toleranceDegrees, out StripsHandle strips);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_base_mesh_save(BaseMeshHandle baseMesh, [Out] byte[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_base_mesh_load(byte[] bytes, UIntPtr length, out BaseMeshHandle baseMesh);
 
         // LmlShading.
         [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_shading_site_default(out ShadingSite site);

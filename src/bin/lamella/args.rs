@@ -440,12 +440,22 @@ pub struct NetArgs {
 pub struct OptimiseArgs {
     /// The net: vertices, and its rows and columns as `l` polylines after `o rows` and
     /// `o columns` (the net.obj of `lamella net`).
-    #[arg(long, value_name = "net.obj")]
-    pub net: PathBuf,
+    #[arg(long, value_name = "net.obj", required_unless_present = "resume")]
+    pub net: Option<PathBuf>,
     /// The family of the rows and of the columns, comma-separated: P<θ> (pseudo-geodesics of
-    /// angle θ in degrees), G (geodesics) or A (asymptotic curves), e.g. P60,P60.
-    #[arg(long, value_name = "F,G")]
-    pub types: String,
+    /// angle θ in degrees), G (geodesics), A (asymptotic curves) or S<β> (constant slope β in
+    /// degrees against the planes orthogonal to --axis; two of them make every node axis parallel
+    /// to it, Sec. 5.2.2), e.g. P60,P60 or S20,S20.
+    #[arg(long, value_name = "F,G", required_unless_present = "resume")]
+    pub types: Option<String>,
+    /// The axis of S<β> families (three numbers, any length but not zero) [default: 0,0,1].
+    #[arg(long, value_name = "X,Y,Z")]
+    pub axis: Option<String>,
+    /// Continue a base-mesh optimisation saved by an earlier `optimise` (its optimise.bin: net,
+    /// reference, families, torsion-free nodes, tolerance and the optimised net), bit for bit as
+    /// if it had not stopped; --max-iterations includes the iterations it ran before.
+    #[arg(long, value_name = "optimise.bin", conflicts_with_all = ["net", "types", "axis", "reference", "torsion_free", "tolerance"])]
+    pub resume: Option<PathBuf>,
     /// Also make every node torsion-free: one ruling shared by both strips there (Eq. 21).
     #[arg(long)]
     pub torsion_free: bool,
@@ -456,11 +466,11 @@ pub struct OptimiseArgs {
     /// Most Levenberg–Marquardt iterations.
     #[arg(long, value_name = "N", default_value_t = 300)]
     pub max_iterations: usize,
-    /// Strip width in metres [default: half the mean segment length of the net].
+    /// Strip width in metres [default: half the mean segment length of the net as given].
     #[arg(long, value_name = "M")]
     pub width: Option<f64>,
     /// Largest angle error (degrees) of a family at a vertex, measured against the reference's
-    /// normal; above it the command exits 3.
+    /// normal; above it the command exits 3 (with --resume, the session's).
     #[arg(long, value_name = "DEGREES", default_value_t = 1.0)]
     pub tolerance: f64,
     #[command(flatten)]

@@ -42,7 +42,7 @@ pub fn parse_families(flag: &str, text: &str) -> CliResult<Vec<Family>> {
     Ok(families)
 }
 
-fn parse_family(flag: &str, name: &str) -> CliResult<Family> {
+pub fn parse_family(flag: &str, name: &str) -> CliResult<Family> {
     let bad = || CliError::bad_input(format!("{flag}: '{}' is not P<θ>, G or A", lamella::input::clip(name)));
     match name {
         "A" | "a" => Ok(Family::Asymptotic),

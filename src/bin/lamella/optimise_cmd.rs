@@ -1,18 +1,22 @@
 //! `lamella optimise`: the base-mesh optimisation of paper Sec. 3.5 on the net.obj of `net`: its
 //! rows and columns made into the asked families exactly near the reference surface, with
 //! `--torsion-free` also a ruling shared by both strips at every node (Sec. 5.2.1, Eq. 21); the
-//! strips of the optimised net, its nodes and a report measured against the reference; exit 3
-//! when a family misses its angle or the nodes are not torsion-free as asked.
+//! strips of the optimised net, its nodes, the session (optimise.bin, continued by `--resume`) and
+//! a report measured against the reference; exit 3 when a family misses its angle or the nodes
+//! are not torsion-free as asked.
 use crate::args::OptimiseArgs;
 use crate::config::DEFAULT_OUT;
 use crate::error::{CliError, CliResult};
-use crate::mesh_input::{load_mesh, mesh_name};
-use crate::net_cmd::{family_label, parse_families};
+use crate::mesh_input::{load_mesh, mesh_name, read_bytes};
+use crate::config::parse_vector;
+use crate::net_cmd::{family_label, parse_family};
 use crate::net_obj::{net_obj, read_net_obj};
 use crate::output_dir::OutputDir;
 use crate::progress::{note, summary, Verbosity};
 use crate::strip_obj::strips_obj;
 use lamella::base_mesh::{BaseMeshParams, BaseMeshReport, BaseMeshSolver, NetMesh, NodeRuling, TORSION_FREE_DEGREES};
+use lamella::field::Family;
+use lamella::mesh::Vec3;
 use lamella::strips::StripPattern;
 use serde_json::json;
 use std::fmt::Write as _;
@@ -22,52 +26,67 @@ use std::time::Instant;
 /// Iterations per `step` between progress notes.
 const STEP: usize = 10;
 
+/// The optimisation to run, and how the report names its net and its reference: continued from
+/// --resume, or new from --net, --types and --torsion-free near --reference.
+fn start(args: &OptimiseArgs) -> CliResult<(BaseMeshSolver, String, String)> {
+    if let Some(path) = &args.resume {
+        let bytes = read_bytes(path)?;
+        let solver = BaseMeshSolver::from_bytes(&bytes).map_err(|e| CliError::bad_input(format!("{}: not a usable base-mesh session: {e}", path.display())))?;
+        let name = format!("base-mesh session {}", path.display());
+        return Ok((solver, name.clone(), name));
+    }
+    // Invariant: clap requires --net and --types unless --resume is given.
+    let families = parse_types(args.types.as_deref().ok_or_else(|| CliError::bad_input("give --types"))?, args.axis.as_deref())?;
+    let path = args.net.as_deref().ok_or_else(|| CliError::bad_input("give --net"))?;
+    let net = read_net_obj(path)?;
+    let reference = load_mesh(args.reference.as_deref())?;
+    let mut params = BaseMeshParams::new(families[0], families[1]);
+    params.torsion_free = args.torsion_free;
+    params.tolerance_degrees = args.tolerance;
+    let solver = BaseMeshSolver::new(&net, &reference, params).map_err(|e| CliError::bad_input(format!("optimise: {e}")))?;
+    Ok((solver, path.display().to_string(), mesh_name(args.reference.as_deref())))
+}
+
 pub fn run(args: &OptimiseArgs) -> CliResult<()> {
     let started = Instant::now();
     let verbosity = Verbosity::from(args.verbosity);
-    let families = parse_families("--types", &args.types)?;
     if !(args.tolerance.is_finite() && args.tolerance > 0.0 && args.tolerance < 90.0) {
         return Err(CliError::bad_input(format!("--tolerance: must lie in (0°, 90°), got {}", args.tolerance)));
     }
     if let Some(width) = args.width.filter(|w| !(w.is_finite() && *w > 0.0)) {
         return Err(CliError::bad_input(format!("--width: must be finite and > 0, got {width}")));
     }
-    let net = read_net_obj(&args.net)?;
-    let reference = load_mesh(args.reference.as_deref())?;
-    let mut params = BaseMeshParams::new(families[0], families[1]);
-    params.torsion_free = args.torsion_free;
-    params.tolerance_degrees = args.tolerance;
-    let mut solver = BaseMeshSolver::new(&net, &reference, params).map_err(|e| CliError::bad_input(format!("optimise: {e}")))?;
-    let width = match args.width {
-        Some(width) => width,
-        None => 0.5 * mean_segment(&net),
-    };
+    let (mut solver, net_name, name) = start(args)?;
+    let params = solver.params().clone();
+    let (tolerance, torsion_free) = (params.tolerance_degrees, params.torsion_free);
+    let given = solver.given_net();
+    let width = args.width.unwrap_or_else(|| 0.5 * mean_segment(given));
     let target: PathBuf = args.out.out.clone().unwrap_or_else(|| PathBuf::from(DEFAULT_OUT));
     let out = OutputDir::create(&target, args.out.force)?;
-    let labels: Vec<String> = families.iter().map(family_label).collect();
-    let name = mesh_name(args.reference.as_deref());
-    note(verbosity, &format!("{}: {} vertices, {} rows, {} columns; {} near {name}{}", args.net.display(), net.vertex_count(), net.rows().len(), net.columns().len(), labels.join(", "), if args.torsion_free { ", torsion-free nodes" } else { "" }));
-    note(verbosity, &progress_line(solver.initial_report()));
+    let labels: Vec<String> = params.families.iter().map(family_label).collect();
+    note(verbosity, &format!("{net_name}: {} vertices, {} rows, {} columns; {} near {name}{}", given.vertex_count(), given.rows().len(), given.columns().len(), labels.join(", "), if torsion_free { ", torsion-free nodes" } else { "" }));
+    note(verbosity, &progress_line(solver.report()));
     while solver.iterations() < args.max_iterations && !solver.is_converged() {
         let report = solver.step(STEP.min(args.max_iterations - solver.iterations())).map_err(|e| CliError::internal(format!("optimise: {e}")))?;
         if verbosity == Verbosity::Verbose {
             note(verbosity, &progress_line(&report));
         }
     }
-    let strips = solver.strips(width, args.tolerance).map_err(|e| CliError::internal(format!("strips: {e}")))?;
+    let strips = solver.strips(width, tolerance).map_err(|e| CliError::internal(format!("strips: {e}")))?;
     let optimised = solver.net();
     out.write("net.obj", net_obj("lamella optimise: the optimised net", optimised.positions(), &optimised.quads(), optimised.rows(), optimised.columns()))?;
     for (k, pattern) in strips.iter().enumerate() {
         out.write(&format!("strips_{k}.obj"), strips_obj(pattern))?;
     }
+    out.write("optimise.bin", solver.to_bytes())?;
     out.write("nodes.csv", nodes_csv(&optimised, solver.nodes()))?;
     let report = solver.report().clone();
     let json = json!({
-        "net": args.net.display().to_string(),
+        "net": net_name,
         "reference": name,
         "families": labels,
-        "torsion_free_asked": args.torsion_free,
-        "tolerance_degrees": args.tolerance,
+        "torsion_free_asked": torsion_free,
+        "tolerance_degrees": tolerance,
         "width": width,
         "initial": solver.initial_report(),
         "final": &report,
@@ -80,24 +99,24 @@ pub fn run(args: &OptimiseArgs) -> CliResult<()> {
     summary(
         verbosity,
         &format!(
-            "{} iterations{}\n{}\n{}done in {:.1} s; wrote {target}/ (net.obj, strips_<k>.obj, nodes.csv, report.json)",
+            "{} iterations{}\n{}\n{}done in {:.1} s; wrote {target}/ (net.obj, optimise.bin, strips_<k>.obj, nodes.csv, report.json)",
             report.iterations,
             if report.converged { ", converged" } else { "" },
             outcome_lines(&labels, solver.initial_report(), &report, &strips),
-            if args.torsion_free { "" } else { "(node torsion as it stands; --torsion-free asks for 0)\n" },
+            if torsion_free { "" } else { "(node torsion as it stands; --torsion-free asks for 0)\n" },
             started.elapsed().as_secs_f64()
         ),
     )?;
     let mut missed = Vec::new();
     for (k, family) in report.families.iter().enumerate() {
-        if family.max_error_degrees > args.tolerance || family.straight > 0 {
+        if family.max_error_degrees > tolerance || family.straight > 0 {
             let at = family.worst.map_or(String::new(), |w| format!(" (worst at ({:.3}, {:.3}, {:.3}))", w.point[0], w.point[1], w.point[2]));
             missed.push(format!("family {} misses {:.1}° by up to {:.2}°{at}, {} straight vertices", labels[k], report.targets_degrees[k], family.max_error_degrees, family.straight));
         }
     }
-    if args.torsion_free && !report.torsion_free_stage {
+    if torsion_free && !report.torsion_free_stage {
         missed.push("the families did not settle, so the torsion-free nodes were not started".into());
-    } else if args.torsion_free && !report.torsion_free {
+    } else if torsion_free && !report.torsion_free {
         missed.push(format!("nodes are not torsion-free: rulings up to {:.2}° apart (at vertex {}; {TORSION_FREE_DEGREES}° allowed)", report.node_torsion.max_degrees, report.node_torsion.worst_vertex.map_or("-".into(), |v| v.to_string())));
     }
     if missed.is_empty() {
@@ -105,6 +124,36 @@ pub fn run(args: &OptimiseArgs) -> CliResult<()> {
     } else {
         Err(CliError::NoAcceptableFamily(format!("{}; try more --max-iterations, a larger --tolerance, other families or a finer net", missed.join("; "))))
     }
+}
+
+/// `--types`: two names, each as `net --families` takes them or `S<β>`, a constant slope β about
+/// `axis` (`--axis`, default the z axis).
+fn parse_types(text: &str, axis: Option<&str>) -> CliResult<Vec<Family>> {
+    let axis = match axis {
+        Some(text) => parse_vector("--axis", text)?,
+        None => Vec3::z(),
+    };
+    if axis.norm() == 0.0 {
+        return Err(CliError::bad_input("--axis: must not be zero"));
+    }
+    let names: Vec<&str> = text.split(',').map(str::trim).collect();
+    if names.len() != 2 {
+        return Err(CliError::bad_input(format!("--types: a net has two families, got {} in '{}'", names.len(), lamella::input::clip(text))));
+    }
+    names
+        .into_iter()
+        .map(|name| match name.strip_prefix(['S', 's']) {
+            Some(slope) => {
+                let bad = || CliError::bad_input(format!("--types: the slope of '{}' must be a number in (−90°, 90°)", lamella::input::clip(name)));
+                let slope_degrees: f64 = slope.parse().map_err(|_| bad())?;
+                if !(slope_degrees.is_finite() && slope_degrees.abs() < 90.0) {
+                    return Err(bad());
+                }
+                Ok(Family::ConstantSlope { axis: [axis.x, axis.y, axis.z], slope_degrees, free_slope: false })
+            }
+            None => parse_family("--types", name),
+        })
+        .collect()
 }
 
 fn mean_segment(net: &NetMesh) -> f64 {
