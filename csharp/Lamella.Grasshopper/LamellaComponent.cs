@@ -9,14 +9,14 @@ namespace Lamella.Grasshopper
     /// <summary>
     /// The common frame of the Lamella components: tab "Lamella", icon by name, the native library loaded before
     /// the first call, every failure (bad input, a native status, a replaced upstream result) turned into a component
-    /// error instead of an exception, and the lifetime of native results: one per iteration (list item or tree
-    /// branch) of a solution, kept while downstream components read them, released when the next solution starts, when
+    /// error instead of an exception, and the lifetime of native results: any number per iteration (list item or
+    /// tree branch) of a solution, kept while downstream components read them, released when the next solution starts, when
     /// the component leaves its document or when the document closes.
     /// </summary>
     public abstract class LamellaComponent : GH_Component
     {
         private readonly string iconName;
-        private readonly IterationSlots<IDisposable> results = new IterationSlots<IDisposable>();
+        private readonly IterationResults results = new IterationResults();
 
         protected LamellaComponent(string name, string nickname, string description, string iconName)
             : base(name, nickname, description, LamellaInfo.Category, "Strips")
@@ -61,12 +61,8 @@ namespace Lamella.Grasshopper
         /// <summary>Releases every native object the component holds (removed from the document, or the document closes).</summary>
         protected virtual void ReleaseNative() => results.Clear();
 
-        /// <summary>Keeps <paramref name="result"/> alive as the result of this iteration until the next solution, and returns it.</summary>
-        protected T Keep<T>(IGH_DataAccess DA, T result) where T : class, IDisposable
-        {
-            results.Set(DA.Iteration, result);
-            return result;
-        }
+        /// <summary>Keeps <paramref name="result"/> alive with this iteration's other results until the next solution, and returns it.</summary>
+        protected T Keep<T>(IGH_DataAccess DA, T result) where T : class, IDisposable => results.Keep(DA.Iteration, result);
 
         protected sealed override void SolveInstance(IGH_DataAccess DA)
         {

@@ -45,6 +45,27 @@ namespace Lamella.Tests
         }
 
         [Test]
+        public void AnIterationKeepsEveryLinkOfItsChainUntilCleared()
+        {
+            var results = new IterationResults();
+            Counted mesh = new Counted(), session = new Counted(), curves = new Counted(), other = new Counted();
+            // One iteration builds a chain; keeping a later link must not release an earlier one.
+            Assert.AreSame(mesh, results.Keep(0, mesh));
+            results.Keep(0, session);
+            results.Keep(0, curves);
+            results.Keep(0, session);
+            results.Keep(1, other);
+            Assert.AreEqual(3, results.CountAt(0));
+            Assert.AreEqual(1, results.CountAt(1));
+            Assert.AreEqual(0, mesh.Disposals + session.Disposals + curves.Disposals + other.Disposals, "nothing released while the solution stands");
+            results.Clear();
+            Assert.AreEqual(new[] { 1, 1, 1, 1 }, new[] { mesh.Disposals, session.Disposals, curves.Disposals, other.Disposals }, "each released once");
+            Assert.AreEqual(0, results.CountAt(0));
+            Assert.Throws<ArgumentNullException>(() => results.Keep<Counted>(0, null));
+            Assert.Throws<ArgumentOutOfRangeException>(() => results.Keep(-1, mesh));
+        }
+
+        [Test]
         public void SlotsReleaseNativeResults()
         {
             var grid = new Grid(8, 8, 1.0, 0, 0);
