@@ -2200,6 +2200,34 @@ LmlStatus lml_base_mesh_new(const struct LmlMesh *reference,
                             uint32_t torsion_free,
                             struct LmlBaseMesh **out);
 
+// Starts optimising a net of rows and columns (given as in `lml_base_mesh_new`) so that both
+// families become curves of constant slope about one axis (Sec. 5.2.2–5.2.3): every segment
+// makes the angle β of its family with the planes orthogonal to `axis` (`ê·a = sin β`, Eq. 22
+// per segment) and the axis lies in every rectifying plane, so the rulings of every strip, and
+// the axis of every node, are parallel to `axis`: a torsion-free structure (Sec. 5.2.2).
+//
+// - `reference`, `xyz`, `vertex_count`, `polyline_vertices`, `polyline_vertex_count`,
+//   `polyline_lengths`, `row_count`, `column_count`, `out`: as in `lml_base_mesh_new`.
+// - `slope_degrees_rows`, `slope_degrees_columns`: each family's slope β in (−90°, 90°) (held at
+//   β or −β, whichever its polylines are nearer to as given); the report's `target_degrees` and
+//   angle errors are slopes then.
+// - `axis`: 3 doubles, finite, not all zero (any length).
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (as `lml_base_mesh_new`, or a slope or
+// the axis out of range, named); `LML_STATUS_INTERNAL_ERROR` (the problem could not be set up).
+LmlStatus lml_base_mesh_new_slopes(const struct LmlMesh *reference,
+                                   const double *xyz,
+                                   size_t vertex_count,
+                                   const uint32_t *polyline_vertices,
+                                   size_t polyline_vertex_count,
+                                   const uint32_t *polyline_lengths,
+                                   size_t row_count,
+                                   size_t column_count,
+                                   double slope_degrees_rows,
+                                   double slope_degrees_columns,
+                                   const double *axis,
+                                   struct LmlBaseMesh **out);
+
 // Starts optimising the quad net of a gridshell (`lml_strip_net_new`; its rows are the runs of
 // crossings along one level of the first field, its columns those along one level of the
 // second) as `lml_base_mesh_new` does: the net's vertices are `lml_strip_net_vertices`.

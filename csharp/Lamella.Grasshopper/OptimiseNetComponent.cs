@@ -20,7 +20,7 @@ namespace Lamella.Grasshopper
     {
         public OptimiseNetComponent()
             : base("Optimise Net", "OptNet",
-                "Moves a net's vertices near the reference surface until its rows and columns are exact families of angle θ (paper Sec. 3.5: 0° and 180° asymptotic curves, 90° geodesics, others pseudo-geodesics) and, with Torsion-free, until the strips of every node's row and column share its ruling (Sec. 5.2.1). Then each row and column carries a developable strip of planar quads. Solves when Solve is true.",
+                "Moves a net's vertices near the reference surface until its rows and columns are exact families of angle θ (paper Sec. 3.5: 0° and 180° asymptotic curves, 90° geodesics, others pseudo-geodesics) and, with Torsion-free, until the strips of every node's row and column share its ruling (Sec. 5.2.1); with a Slope Axis, until both families have constant slope about it (parallel node axes, Sec. 5.2.2). Then each row and column carries a developable strip of planar quads. Solves when Solve is true.",
                 "StripField")
         {
         }
@@ -39,6 +39,8 @@ namespace Lamella.Grasshopper
             pManager.AddNumberParameter("Width", "W", "Width of each flat strip, in document units, > 0. Default: a round number near 2 % of the net's extent (named in a remark).", GH_ParamAccess.item);
             pManager[6].Optional = true;
             pManager.AddBooleanParameter("Solve", "Sv", "True solves within this solution. Default false.", GH_ParamAccess.item, false);
+            pManager.AddVectorParameter("Slope Axis", "SA", "Optional. When given, Theta Rows and Theta Columns are read as slopes β in degrees, in (−90, 90), against the planes orthogonal to this axis: both families become curves of constant slope, every strip's rulings and every node's axis parallel to the axis (Sec. 5.2.2–5.2.3), torsion-free without Torsion-free.", GH_ParamAccess.item);
+            pManager[8].Optional = true;
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -79,6 +81,8 @@ namespace Lamella.Grasshopper
             DA.GetData(5, ref maxIterations);
             bool widthGiven = DA.GetData(6, ref width);
             DA.GetData(7, ref solveNow);
+            Vector3d axis = new Vector3d(0, 0, 0);
+            bool slopes = DA.GetData(8, ref axis);
             if (maxIterations < 1)
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Error, "Max Iterations must be at least 1");
@@ -117,7 +121,9 @@ namespace Lamella.Grasshopper
             var meshes = new DataTree<object>();
             var verdicts = new List<string>();
             using (LamellaMesh reference = LamellaMesh.FromArrays(clean.Xyz, clean.Triangles))
-            using (var solver = new BaseMeshSolver(reference, welded.Xyz, polylines[0], polylines[1], thetas[0], thetas[1], torsionFree))
+            using (var solver = slopes
+                ? BaseMeshSolver.ConstantSlopes(reference, welded.Xyz, polylines[0], polylines[1], thetas[0], thetas[1], new[] { axis.X, axis.Y, axis.Z })
+                : new BaseMeshSolver(reference, welded.Xyz, polylines[0], polylines[1], thetas[0], thetas[1], torsionFree))
             {
                 report = solver.Report;
                 while (report.Iterations < maxIterations && !report.IsConverged)
@@ -145,7 +151,7 @@ namespace Lamella.Grasshopper
             if (!report.FamiliesMet)
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, string.Format(CultureInfo.InvariantCulture,
                     "the families are not met: rows up to {0:0.##}°, columns up to {1:0.##}° off θ (the library accepts 1°)", report.AngleErrorMaxDegrees[0], report.AngleErrorMaxDegrees[1]));
-            if (torsionFree && !report.IsTorsionFree)
+            if ((torsionFree || slopes) && !report.IsTorsionFree)
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, string.Format(CultureInfo.InvariantCulture,
                     "the nodes are not torsion-free: rulings up to {0:0.##}° apart (the library accepts 0.5°; see Node Angles)", report.NodeRulingAngleMaxDegrees));
 

@@ -163,6 +163,45 @@ namespace Lamella.Tests
         }
 
         [Test]
+        public void HelicesOptimisedForConstantSlopeGetVerticalNodeAxes()
+        {
+            // A helix climbs its development's diagonal: 45° against the horizontal planes.
+            var cylinder = new Cylinder(72, 40, 7);
+            var net = new HelixNet(0.02);
+            using (var reference = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            using (var solver = BaseMeshSolver.ConstantSlopes(reference, net.Points, net.Rows, net.Columns, 45.0, 45.0, new[] { 0.0, 0.0, 3.0 }))
+            {
+                BaseMeshReport report = solver.Report;
+                while (report.Iterations < 300 && !report.IsConverged) report = solver.Step(10);
+                Assert.IsTrue(report.FamiliesMet && report.IsTorsionFree, report.Describe());
+                double[] xyz = solver.Positions();
+                foreach (int[] line in net.Rows.Concat(net.Columns))
+                {
+                    for (int i = 0; i + 1 < line.Length; i++)
+                    {
+                        int a = line[i], b = line[i + 1];
+                        double dx = xyz[3 * b] - xyz[3 * a], dy = xyz[3 * b + 1] - xyz[3 * a + 1], dz = xyz[3 * b + 2] - xyz[3 * a + 2];
+                        double slope = Math.Abs(Math.Asin(dz / Math.Sqrt(dx * dx + dy * dy + dz * dz))) * 180.0 / Math.PI;
+                        Assert.AreEqual(45.0, slope, 0.5);
+                    }
+                }
+                BaseMeshNode[] nodes = solver.Nodes();
+                Assert.Greater(nodes.Length, 200);
+                foreach (BaseMeshNode node in nodes)
+                {
+                    Assert.LessOrEqual(node.RulingAngleDegrees.Value, 0.5);
+                    Assert.GreaterOrEqual(Math.Abs(node.Axis[2]), Math.Cos(0.5 * Math.PI / 180.0));
+                }
+            }
+            using (var reference = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            {
+                var error = Assert.Throws<LamellaException>(() => BaseMeshSolver.ConstantSlopes(reference, net.Points, net.Rows, net.Columns, 45.0, 45.0, new double[3]));
+                StringAssert.Contains("axis", error.Message);
+                Assert.Throws<ArgumentException>(() => BaseMeshSolver.ConstantSlopes(reference, net.Points, net.Rows, net.Columns, 45.0, 45.0, new double[2]));
+            }
+        }
+
+        [Test]
         public void ASavedSessionStepsOnToTheSameBits()
         {
             var cylinder = new Cylinder(36, 20, 7);

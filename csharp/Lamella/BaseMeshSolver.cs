@@ -152,6 +152,30 @@ namespace Lamella
         }
 
         /// <summary>
+        /// Starts from a net given as in the constructor, toward two families of constant slope about one axis (Sec.
+        /// 5.2.2–5.2.3, <c>lml_base_mesh_new_slopes</c>): every segment at its family's slope β against the planes orthogonal
+        /// to <paramref name="axis"/>, the axis in every rectifying plane, so every strip's rulings and every node's axis
+        /// are parallel to it. The report's targets and errors are slopes then.
+        /// </summary>
+        /// <exception cref="LamellaException">A slope outside (−90°, 90°) or a zero axis (named), or the net refused as in the constructor.</exception>
+        public static BaseMeshSolver ConstantSlopes(LamellaMesh reference, double[] points, int[][] rows, int[][] columns, double slopeRowsDegrees,
+            double slopeColumnsDegrees, double[] axis)
+        {
+            if (reference == null) throw new ArgumentNullException(nameof(reference));
+            if (points == null) throw new ArgumentNullException(nameof(points));
+            if (axis == null) throw new ArgumentNullException(nameof(axis));
+            if (points.Length % 3 != 0) throw new ArgumentException("points holds " + points.Length + " values, not a multiple of 3", nameof(points));
+            if (axis.Length != 3) throw new ArgumentException("axis holds " + axis.Length + " values, not 3", nameof(axis));
+            uint[] lengths;
+            uint[] vertices = Concatenate(rows, columns, out lengths);
+            BaseMeshHandle handle;
+            Native.Check(NativeMethods.lml_base_mesh_new_slopes(reference.Handle, points, Native.Size(points.Length / 3), vertices,
+                Native.Size(vertices.Length), lengths, Native.Size(rows.Length), Native.Size(columns.Length), slopeRowsDegrees, slopeColumnsDegrees,
+                axis, out handle));
+            return new BaseMeshSolver(handle);
+        }
+
+        /// <summary>
         /// Restores a session saved with <see cref="Save"/> (<c>lml_base_mesh_load</c>); it continues bit for bit as the
         /// saved one would have.
         /// </summary>

@@ -144,6 +144,44 @@ fn session(net: &NetMesh, reference: &TriMesh, theta_degrees_rows: f64, theta_de
     Ok(LmlBaseMesh { solver: BaseMeshSolver::new(net, reference, params)? })
 }
 
+/// The net of `lml_base_mesh_new`'s arrays (their contracts as documented there).
+///
+/// # Safety
+/// `xyz` readable for `3 vertex_count` doubles, `polyline_vertices` for `polyline_vertex_count`
+/// and `polyline_lengths` for `row_count + column_count` values (or NULL, refused).
+unsafe fn net_from_arrays(
+    xyz: *const f64,
+    vertex_count: usize,
+    polyline_vertices: *const u32,
+    polyline_vertex_count: usize,
+    polyline_lengths: *const u32,
+    row_count: usize,
+    column_count: usize,
+) -> Result<NetMesh, Failure> {
+    // SAFETY (all blocks): the caller's contract.
+    let xyz = unsafe { input(xyz, element_count(vertex_count, 3, "vertex_count")?, "xyz") }?;
+    let polyline_count = row_count.checked_add(column_count).ok_or_else(|| Failure::argument("column_count", "row_count + column_count is too large"))?;
+    let lengths = unsafe { input(polyline_lengths, polyline_count, "polyline_lengths") }?;
+    let vertices = unsafe { input(polyline_vertices, polyline_vertex_count, "polyline_vertices") }?;
+    let total = lengths.iter().try_fold(0usize, |total, &length| total.checked_add(length as usize));
+    if total != Some(polyline_vertex_count) {
+        let sum = total.map_or_else(|| "exceed the address space".to_string(), |t| format!("sum to {t}"));
+        return Err(Failure::argument("polyline_lengths", format!("the {polyline_count} lengths {sum}, not polyline_vertex_count = {polyline_vertex_count}")));
+    }
+    let mut rest = vertices;
+    let mut polylines: Vec<Vec<u32>> = lengths
+        .iter()
+        .map(|&length| {
+            let (line, tail) = rest.split_at(length as usize);
+            rest = tail;
+            line.to_vec()
+        })
+        .collect();
+    let columns = polylines.split_off(row_count);
+    let positions = xyz.chunks_exact(3).map(|p| Vec3::new(p[0], p[1], p[2])).collect();
+    Ok(NetMesh::new(positions, polylines, columns)?)
+}
+
 /// Starts optimising a net of rows and columns (paper Sec. 3.5) so that each family of polylines
 /// becomes the asked curves (pseudo-geodesic, geodesic or asymptotic) on or near `reference`,
 /// with the default weights; with `torsion_free` non-zero, also so that the strips of the row and
@@ -191,28 +229,60 @@ pub unsafe extern "C" fn lml_base_mesh_new(
         let mut out = unsafe { Out::new(out, "out") }?;
         out.set(std::ptr::null_mut());
         let reference = unsafe { handle(reference, "reference") }?;
-        let xyz = unsafe { input(xyz, element_count(vertex_count, 3, "vertex_count")?, "xyz") }?;
-        let polyline_count = row_count.checked_add(column_count).ok_or_else(|| Failure::argument("column_count", "row_count + column_count is too large"))?;
-        let lengths = unsafe { input(polyline_lengths, polyline_count, "polyline_lengths") }?;
-        let vertices = unsafe { input(polyline_vertices, polyline_vertex_count, "polyline_vertices") }?;
-        let total = lengths.iter().try_fold(0usize, |total, &length| total.checked_add(length as usize));
-        if total != Some(polyline_vertex_count) {
-            let sum = total.map_or_else(|| "exceed the address space".to_string(), |t| format!("sum to {t}"));
-            return Err(Failure::argument("polyline_lengths", format!("the {polyline_count} lengths {sum}, not polyline_vertex_count = {polyline_vertex_count}")));
-        }
-        let mut rest = vertices;
-        let mut polylines: Vec<Vec<u32>> = lengths
-            .iter()
-            .map(|&length| {
-                let (line, tail) = rest.split_at(length as usize);
-                rest = tail;
-                line.to_vec()
-            })
-            .collect();
-        let columns = polylines.split_off(row_count);
-        let positions = xyz.chunks_exact(3).map(|p| Vec3::new(p[0], p[1], p[2])).collect();
-        let net = NetMesh::new(positions, polylines, columns)?;
+        let net = unsafe { net_from_arrays(xyz, vertex_count, polyline_vertices, polyline_vertex_count, polyline_lengths, row_count, column_count) }?;
         out.set_owned(session(&net, &reference.mesh, theta_degrees_rows, theta_degrees_columns, torsion_free)?);
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// Starts optimising a net of rows and columns (given as in `lml_base_mesh_new`) so that both
+/// families become curves of constant slope about one axis (Sec. 5.2.2–5.2.3): every segment
+/// makes the angle β of its family with the planes orthogonal to `axis` (`ê·a = sin β`, Eq. 22
+/// per segment) and the axis lies in every rectifying plane, so the rulings of every strip, and
+/// the axis of every node, are parallel to `axis`: a torsion-free structure (Sec. 5.2.2).
+///
+/// - `reference`, `xyz`, `vertex_count`, `polyline_vertices`, `polyline_vertex_count`,
+///   `polyline_lengths`, `row_count`, `column_count`, `out`: as in `lml_base_mesh_new`.
+/// - `slope_degrees_rows`, `slope_degrees_columns`: each family's slope β in (−90°, 90°) (held at
+///   β or −β, whichever its polylines are nearer to as given); the report's `target_degrees` and
+///   angle errors are slopes then.
+/// - `axis`: 3 doubles, finite, not all zero (any length).
+///
+/// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (as `lml_base_mesh_new`, or a slope or
+/// the axis out of range, named); `LML_STATUS_INTERNAL_ERROR` (the problem could not be set up).
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_new_slopes(
+    reference: *const LmlMesh,
+    xyz: *const f64,
+    vertex_count: usize,
+    polyline_vertices: *const u32,
+    polyline_vertex_count: usize,
+    polyline_lengths: *const u32,
+    row_count: usize,
+    column_count: usize,
+    slope_degrees_rows: f64,
+    slope_degrees_columns: f64,
+    axis: *const f64,
+    out: *mut *mut LmlBaseMesh,
+) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (all blocks): the pointer contracts are those documented above.
+        let mut out = unsafe { Out::new(out, "out") }?;
+        out.set(std::ptr::null_mut());
+        let reference = unsafe { handle(reference, "reference") }?;
+        let axis = unsafe { input(axis, 3, "axis") }?;
+        if !(axis.iter().all(|a| a.is_finite()) && axis.iter().any(|&a| a != 0.0)) {
+            return Err(Failure::argument("axis", format!("must be finite and not zero, got ({}, {}, {})", axis[0], axis[1], axis[2])));
+        }
+        let slope = |degrees: f64, name: &str| {
+            if !(degrees.is_finite() && degrees.abs() < 90.0) {
+                return Err(Failure::argument(name, format!("must lie in (-90, 90), got {degrees}")));
+            }
+            Ok(Family::ConstantSlope { axis: [axis[0], axis[1], axis[2]], slope_degrees: degrees, free_slope: false })
+        };
+        let params = BaseMeshParams::new(slope(slope_degrees_rows, "slope_degrees_rows")?, slope(slope_degrees_columns, "slope_degrees_columns")?);
+        let net = unsafe { net_from_arrays(xyz, vertex_count, polyline_vertices, polyline_vertex_count, polyline_lengths, row_count, column_count) }?;
+        out.set_owned(LmlBaseMesh { solver: BaseMeshSolver::new(&net, &reference.mesh, params)? });
         Ok(LmlStatus::Ok)
     })
 }
@@ -411,7 +481,11 @@ pub unsafe extern "C" fn lml_base_mesh_strips(base_mesh: *const LmlBaseMesh, k: 
             LmlStatus::NoAcceptableFamily
         };
         // Each family's strips are judged at its target (the solver's own reading of θ).
-        let theta_degrees = Some(base_mesh.solver.targets_degrees()[k as usize]);
+        // A constant-slope family prescribes no angle: its strips have one each (as shading strips).
+        let theta_degrees = match base_mesh.solver.params().families[k as usize] {
+            Family::ConstantSlope { .. } => None,
+            _ => Some(base_mesh.solver.targets_degrees()[k as usize]),
+        };
         out.set_owned(LmlStrips { pattern, theta_degrees });
         Ok(status)
     })

@@ -422,6 +422,75 @@ static double worst_geodesic_error(const HelixNet *net, const double *xyz, int k
     return worst;
 }
 
+/* The same helices as curves of constant slope about the axis (45 degrees: a helix climbs its own
+ * development's diagonal): lml_base_mesh_new_slopes makes every segment climb at the slope and
+ * every node's axis vertical, checked here from the positions and the nodes. */
+static void slope_net(const HelixNet *net, const Cylinder *reference)
+{
+    const double axis[3] = {0.0, 0.0, 2.0}, zero[3] = {0.0, 0.0, 0.0};
+    LmlMesh *mesh = NULL;
+    LmlBaseMesh *session = NULL;
+    LmlBaseMeshReport report;
+    LmlBaseMeshNode *nodes;
+    LmlStatus status = LML_STATUS_MORE;
+    double xyz[3 * LINES * LINES], worst_slope = 0.0;
+    size_t i, k, needed = 0, offset = 0, node_count = 0, vertical = 0;
+    unsigned steps = 0;
+    CHECK_STATUS(lml_mesh_new(reference->xyz, reference->vertex_count, reference->triangles, reference->triangle_count, &mesh), LML_STATUS_OK);
+    CHECK_STATUS(lml_base_mesh_new_slopes(mesh, net->xyz, net->n, net->polylines, net->polyline_vertex_count, net->lengths, net->count[0],
+                                          net->count[1], 45.0, 45.0, zero, &session),
+                 LML_STATUS_INVALID_ARGUMENT);
+    CHECK(session == NULL && strstr(lml_last_error_message(), "axis") != NULL);
+    CHECK_STATUS(lml_base_mesh_new_slopes(mesh, net->xyz, net->n, net->polylines, net->polyline_vertex_count, net->lengths, net->count[0],
+                                          net->count[1], 90.0, 45.0, axis, &session),
+                 LML_STATUS_INVALID_ARGUMENT);
+    CHECK(session == NULL && strstr(lml_last_error_message(), "slope_degrees_rows") != NULL);
+    CHECK_STATUS(lml_base_mesh_new_slopes(mesh, net->xyz, net->n, net->polylines, net->polyline_vertex_count, net->lengths, net->count[0],
+                                          net->count[1], 45.0, 45.0, axis, &session),
+                 LML_STATUS_OK);
+    lml_mesh_free(mesh);
+    if (session == NULL) {
+        return;
+    }
+    while (status == LML_STATUS_MORE && steps * 10 < BUDGET) {
+        status = lml_base_mesh_step(session, 10, &report);
+        steps++;
+    }
+    CHECK(status == LML_STATUS_CONVERGED && report.families_met == 1 && report.torsion_free == 1);
+    CHECK(fabs(fabs(report.target_degrees[0]) - 45.0) < 1e-9 && fabs(fabs(report.target_degrees[1]) - 45.0) < 1e-9);
+    CHECK_STATUS(lml_base_mesh_positions(session, xyz, 3 * net->n, &needed), LML_STATUS_OK);
+    /* Every segment of every polyline at 45 degrees to the horizontal planes. */
+    for (k = 0; k < 2; k++) {
+        size_t line;
+        for (line = 0; line < net->count[k]; line++) {
+            size_t length = net->lengths[(k == 1 ? net->count[0] : 0) + line], at;
+            for (at = 0; at + 1 < length; at++) {
+                uint32_t a = net->polylines[offset + at], b = net->polylines[offset + at + 1];
+                double e[3];
+                difference(xyz + 3 * b, xyz + 3 * a, e);
+                worst_slope = fmax(worst_slope, fabs(fabs(asin(e[2] / norm(e))) * 180.0 / PI - 45.0));
+            }
+            offset += length;
+        }
+    }
+    CHECK(worst_slope <= 0.5);
+    CHECK_STATUS(lml_base_mesh_nodes(session, NULL, 0, &node_count), LML_STATUS_BUFFER_TOO_SMALL);
+    nodes = malloc(node_count * sizeof *nodes);
+    if (nodes != NULL) {
+        CHECK_STATUS(lml_base_mesh_nodes(session, nodes, node_count, &needed), LML_STATUS_OK);
+        for (i = 0; i < node_count; i++) {
+            if (nodes[i].defined && nodes[i].ruling_angle_degrees <= 0.5 && fabs(nodes[i].axis[2]) >= cos(0.5 * PI / 180.0)) {
+                vertical++;
+            }
+        }
+        CHECK(node_count > 200 && vertical == node_count);
+        free(nodes);
+    }
+    printf("  base mesh, constant slope: %u iterations; segments within %.3f deg of 45; %zu of %zu node axes vertical within 0.5 deg\n",
+           (unsigned)report.iterations, worst_slope, vertical, node_count);
+    lml_base_mesh_free(session);
+}
+
 void test_base_mesh(void)
 {
     Cylinder reference;
@@ -442,6 +511,7 @@ void test_base_mesh(void)
     helix_net(net);
     CHECK_STATUS(lml_mesh_new(reference.xyz, reference.vertex_count, reference.triangles, reference.triangle_count, &mesh), LML_STATUS_OK);
     invalid_inputs(net, mesh);
+    slope_net(net, &reference);
 
     CHECK_STATUS(lml_base_mesh_new(mesh, net->xyz, net->n, net->polylines, net->polyline_vertex_count, net->lengths, net->count[0],
                                    net->count[1], 90.0, 90.0, 1, &session),

@@ -135,6 +135,10 @@ namespace Lamella.Interop
             UIntPtr polylineVertexCount, uint[] polylineLengths, UIntPtr rowCount, UIntPtr columnCount, double thetaDegreesRows,
             double thetaDegreesColumns, uint torsionFree, out BaseMeshHandle baseMesh);
         [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_base_mesh_new_slopes(MeshHandle reference, double[] xyz, UIntPtr vertexCount, uint[] polylineVertices,
+            UIntPtr polylineVertexCount, uint[] polylineLengths, UIntPtr rowCount, UIntPtr columnCount, double slopeDegreesRows,
+            double slopeDegreesColumns, double[] axis, out BaseMeshHandle baseMesh);
+        [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_base_mesh_from_strip_net(StripNetHandle net, MeshHandle reference, double thetaDegreesRows,
             double thetaDegreesColumns, uint torsionFree, out BaseMeshHandle baseMesh);
         [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_base_mesh_free(IntPtr baseMesh);
