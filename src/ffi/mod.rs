@@ -13,7 +13,9 @@
 //! array outputs, and the initialisation of Sec. 3.2.2: boundary start points, traced guide
 //! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes; constant-slope
 //! families (Sec. 5.2.3) with their start field and reachable region; and nets of two
-//! families ([`LmlNet`], paper Sec. 4.1) with their quad net and nodes ([`LmlStripNet`]); surface optimisation ([`LmlReshape`], Sec. 3.3);
+//! families ([`LmlNet`], paper Sec. 4.1) with their quad net and nodes ([`LmlStripNet`]); the
+//! optimisation of a net's vertices toward exact families, torsion-free nodes or constant slopes
+//! ([`LmlBaseMesh`], Sec. 3.5, 5.2); surface optimisation ([`LmlReshape`], Sec. 3.3);
 //! shading designs ([`LmlShading`], Sec. 6: site, labels, strips with one θ per curve, the
 //! sun-path check); the Brauner surface of Fig. 32 with its exact asymptotic u-lines; and the
 //! interactive 3D viewer page of strips (`lml_strips_view_html`).
