@@ -22,7 +22,7 @@ use lamella::field::Family;
 use lamella::initialisation::SearchOptions;
 use lamella::mesh::TriMesh;
 use lamella::net::{flat_point, strip_net, NetParams, NetReport, NetSolver, Node, QuadNet, StripNet};
-use lamella::strips::{PatternMetrics, StripPattern};
+use lamella::strips::{PatternMetrics, StripPattern, VertexDiagnostics};
 use serde_json::{json, Value};
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -197,6 +197,21 @@ fn progress_line(r: &NetReport) -> String {
     format!("iteration {}: energy {:.3e}, angle errors {}, intersection min {:.1}°", r.iterations, r.total_energy, errors.join(" / "), r.intersection.min_degrees)
 }
 
+/// The Sec. 5.1 columns of a nodes.csv, for the strips of both families.
+pub fn diagnostics_header() -> String {
+    (0..2).map(|k| format!(",conical_curvature_{k},darboux_angle_degrees_{k},binormal_offset_{k},singular_point_near_{k}")).collect()
+}
+
+/// One strip's Sec. 5.1 cells at a node ([`diagnostics_header`]), empty where undefined or
+/// where no strip passes.
+pub fn diagnostics_cells(d: Option<&VertexDiagnostics>) -> String {
+    let cell = |value: Option<f64>| value.map_or(String::new(), |v| v.to_string());
+    match d {
+        Some(d) => format!(",{},{},{},{}", cell(d.conical_curvature), cell(d.darboux_angle_degrees), cell(d.binormal_offset), u8::from(d.singular_point_near)),
+        None => ",,,,".into(),
+    }
+}
+
 /// The name of strip `id` of family `k` in every output.
 fn net_strip_name(k: usize, id: usize) -> String {
     format!("f{k}_strip_{id}")
@@ -249,11 +264,8 @@ fn crossings_obj(net: &QuadNet) -> String {
 /// nodes.csv: one row per node.
 fn nodes_csv(nodes: &[Node]) -> String {
     let mut text = String::from("strip_0,strip_1,arc_length_0,arc_length_1,x,y,z,axis_x,axis_y,axis_z,ruling_angle_degrees");
-    for k in 0..2 {
-        let _ = write!(text, ",conical_curvature_{k},darboux_angle_degrees_{k},binormal_offset_{k},singular_point_near_{k}");
-    }
+    text.push_str(&diagnostics_header());
     text.push('\n');
-    let cell = |value: Option<f64>| value.map_or(String::new(), |v| v.to_string());
     for n in nodes {
         let (p, a) = (n.position, n.axis);
         let _ = write!(
@@ -272,8 +284,7 @@ fn nodes_csv(nodes: &[Node]) -> String {
             n.ruling_angle_degrees
         );
         for d in &n.diagnostics {
-            let near = u8::from(d.singular_point_near);
-            let _ = write!(text, ",{},{},{},{near}", cell(d.conical_curvature), cell(d.darboux_angle_degrees), cell(d.binormal_offset));
+            text.push_str(&diagnostics_cells(Some(d)));
         }
         text.push('\n');
     }

@@ -9,7 +9,7 @@ use crate::config::DEFAULT_OUT;
 use crate::error::{CliError, CliResult};
 use crate::mesh_input::{load_mesh, mesh_name, read_bytes};
 use crate::config::parse_vector;
-use crate::net_cmd::{family_label, parse_family};
+use crate::net_cmd::{diagnostics_cells, diagnostics_header, family_label, parse_family};
 use crate::net_obj::{net_obj, read_net_obj};
 use crate::output_dir::OutputDir;
 use crate::progress::{note, summary, Verbosity};
@@ -17,7 +17,7 @@ use crate::strip_obj::strips_obj;
 use lamella::base_mesh::{BaseMeshParams, BaseMeshReport, BaseMeshSolver, NetMesh, NodeRuling, TORSION_FREE_DEGREES};
 use lamella::field::Family;
 use lamella::mesh::Vec3;
-use lamella::strips::StripPattern;
+use lamella::strips::{StripPattern, VertexDiagnostics};
 use serde_json::json;
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -79,7 +79,7 @@ pub fn run(args: &OptimiseArgs) -> CliResult<()> {
         out.write(&format!("strips_{k}.obj"), strips_obj(pattern))?;
     }
     out.write("optimise.bin", solver.to_bytes())?;
-    out.write("nodes.csv", nodes_csv(&optimised, solver.nodes()))?;
+    out.write("nodes.csv", nodes_csv(&optimised, solver.nodes(), &strips))?;
     let report = solver.report().clone();
     let json = json!({
         "net": net_name,
@@ -202,14 +202,27 @@ fn outcome_lines(labels: &[String], initial: &BaseMeshReport, last: &BaseMeshRep
     text
 }
 
-/// nodes.csv: one row per vertex inside a row and a column.
-fn nodes_csv(net: &NetMesh, nodes: &[NodeRuling]) -> String {
-    let mut text = String::from("vertex,x,y,z,ruling_angle_degrees,axis_x,axis_y,axis_z\n");
+/// nodes.csv: one row per vertex inside a row and a column, with each family's strip's Sec. 5.1
+/// diagnostics there (the node is a vertex of both strips' centre lines).
+fn nodes_csv(net: &NetMesh, nodes: &[NodeRuling], strips: &[StripPattern; 2]) -> String {
+    let mut text = String::from("vertex,x,y,z,ruling_angle_degrees,axis_x,axis_y,axis_z");
+    text.push_str(&diagnostics_header());
+    text.push('\n');
     let cell = |value: Option<f64>| value.map_or(String::new(), |v| v.to_string());
+    // Per family and vertex: its strip's diagnostics there.
+    let diagnostics: [Vec<Option<VertexDiagnostics>>; 2] = [0, 1].map(|k| {
+        let mut at = vec![None; net.vertex_count()];
+        for strip in &strips[k].strips {
+            for (&v, d) in net.polylines(k)[strip.curve].iter().zip(strip.diagnostics()) {
+                at[v as usize] = Some(d);
+            }
+        }
+        at
+    });
     for node in nodes {
         let p = net.positions()[node.vertex];
         let axis = node.axis.map(|a| [a.x, a.y, a.z]);
-        let _ = writeln!(
+        let _ = write!(
             text,
             "{},{},{},{},{},{},{},{}",
             node.vertex,
@@ -221,6 +234,10 @@ fn nodes_csv(net: &NetMesh, nodes: &[NodeRuling]) -> String {
             cell(axis.map(|a| a[1])),
             cell(axis.map(|a| a[2]))
         );
+        for family in &diagnostics {
+            text.push_str(&diagnostics_cells(family[node.vertex].as_ref()));
+        }
+        text.push('\n');
     }
     text
 }
