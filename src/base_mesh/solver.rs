@@ -8,11 +8,11 @@ use super::params::BaseMeshParams;
 use super::problem::{vec3, Anchor, BaseMeshProblem, CurveRows};
 use super::report::{target_family, BaseMeshReport, Measures, Reference};
 use super::start::{initialise_auxiliaries, mirror_degrees, oriented_target};
-use super::strips::net_strips;
+use super::strips::FamilyStrips;
 use crate::field::Family;
 use crate::mesh::{TriMesh, Vec3};
 use crate::solver::{LeastSquaresProblem, LevenbergMarquardt};
-use crate::strips::StripPattern;
+use crate::strips::{StripPattern, SurfaceProjector};
 use rayon::prelude::*;
 
 /// Optimises a net's vertices so that its rows and columns form the asked families on (near) a
@@ -96,8 +96,9 @@ impl BaseMeshSolver {
         let mut ran = 0;
         let mut energy = self.last_report.energy;
         while ran < max_iterations && !self.converged {
-            let scaled = self.scaled_net();
-            self.problem.anchors = anchors(&self.reference, &scaled, self.scale, &mut self.held);
+            let vertices = self.problem.net().vertex_count();
+            let points = self.x[..3 * vertices].par_chunks_exact(3).map(|p| Vec3::new(p[0], p[1], p[2]));
+            self.problem.anchors = anchors(&self.reference, points, self.scale, &mut self.held);
             let outcome = self.lm.iterate(&self.problem, &mut self.x)?;
             ran += 1;
             self.iterations += 1;
@@ -162,6 +163,20 @@ impl BaseMeshSolver {
     /// family's strips each at their own mean angle).
     /// Errors: `InvalidParameter` for a width or tolerance that is not finite and positive.
     pub fn strips(&self, width: f64, tolerance_degrees: f64) -> Result<[StripPattern; 2], BaseMeshError> {
+        self.with_strips(width, tolerance_degrees, |family| [0, 1].map(|k| family.build(k, &self.measures.rulings[k], self.strip_theta(k))))
+    }
+
+    /// Family `k`'s strips (0: rows, 1: columns) as [`Self::strips`] builds them.
+    /// Errors: `InvalidParameter` for `k` above 1, or as [`Self::strips`].
+    pub fn family_strips(&self, k: usize, width: f64, tolerance_degrees: f64) -> Result<StripPattern, BaseMeshError> {
+        if k > 1 {
+            return Err(BaseMeshError::InvalidParameter { name: "k", message: format!("a net has families 0 and 1, got {k}") });
+        }
+        self.with_strips(width, tolerance_degrees, |family| family.build(k, &self.measures.rulings[k], self.strip_theta(k)))
+    }
+
+    /// Checks the strip parameters and hands `build` the strip builder of the current net.
+    fn with_strips<T>(&self, width: f64, tolerance_degrees: f64, build: impl FnOnce(&FamilyStrips) -> T) -> Result<T, BaseMeshError> {
         if !(width.is_finite() && width > 0.0) {
             return Err(BaseMeshError::InvalidParameter { name: "width", message: format!("must be finite and > 0, got {width}") });
         }
@@ -169,11 +184,16 @@ impl BaseMeshSolver {
             return Err(BaseMeshError::InvalidParameter { name: "tolerance_degrees", message: format!("must lie in (0°, 180°), got {tolerance_degrees}") });
         }
         let net = self.net();
-        let thetas = [0, 1].map(|k| match self.params.families[k] {
+        let projector = SurfaceProjector::new(&self.reference.mesh);
+        Ok(build(&FamilyStrips { net: &net, reference: &self.reference, projector: &projector, width, tolerance_degrees }))
+    }
+
+    /// The angle family `k`'s strips are judged at: its target, none for a constant slope.
+    fn strip_theta(&self, k: usize) -> Option<f64> {
+        match self.params.families[k] {
             Family::ConstantSlope { .. } => None,
             family => Some(target_family(family, self.targets_degrees[k]).theta_degrees()),
-        });
-        Ok(net_strips(&net, &self.reference, &self.measures.rulings, width, thetas, tolerance_degrees))
+        }
     }
 
     pub fn params(&self) -> &BaseMeshParams {
@@ -254,18 +274,16 @@ pub(super) fn assemble(
     held: &mut [bool],
 ) -> Result<(BaseMeshProblem, LevenbergMarquardt), BaseMeshError> {
     let curves = [0, 1].map(|k| CurveRows::new(params.families[k], targets_degrees[k]));
-    let anchors = anchors(reference, &net, scale, held);
+    let anchors = anchors(reference, net.positions().par_iter().copied(), scale, held);
     let problem = BaseMeshProblem::new(net, curves, torsion_free, params.weights, anchors);
     let lm = LevenbergMarquardt::new(&problem, params.lm.clone())?;
     Ok((problem, lm))
 }
 
-/// The reference's closest point and normal for every vertex of the scaled `net` (in parallel,
-/// deterministic); vertices past the reference's boundary are marked in `held` for good.
-fn anchors(reference: &Reference, net: &NetMesh, scale: f64, held: &mut [bool]) -> Vec<Anchor> {
-    let mut anchors: Vec<Anchor> = net
-        .positions()
-        .par_iter()
+/// The reference's closest point and normal for every one of the scaled net's `points` (in
+/// parallel, deterministic); vertices past the reference's boundary are marked in `held` for good.
+fn anchors(reference: &Reference, points: impl IndexedParallelIterator<Item = Vec3>, scale: f64, held: &mut [bool]) -> Vec<Anchor> {
+    let mut anchors: Vec<Anchor> = points
         .map(|p| {
             let (point, normal, _) = reference.closest(&(p / scale));
             let point = point * scale;

@@ -3,20 +3,29 @@
 //! measured against the reference like the strips of level curves (Table 4).
 
 use super::net_mesh::NetMesh;
-use super::node_torsion::PolylineRulings;
 use super::report::Reference;
 use crate::mesh::Vec3;
 use crate::strips::{discrete_binormals, strip_with_rulings, PatternMetrics, SkippedCurve, StripLines, StripPattern, StripWarning, SurfaceProjector, Verdict};
 
-/// Each family's strips of `width` on `net` with the fitted `rulings`, judged at the angles
-/// `thetas` (along the polylines' direction) with `tolerance_degrees`; a family without one (a
-/// constant slope prescribes no angle) has each strip judged at its own mean angle. A strip's
-/// `curve` and `level` are its polyline's index.
-pub(crate) fn net_strips(net: &NetMesh, reference: &Reference, rulings: &PolylineRulings, width: f64, thetas: [Option<f64>; 2], tolerance_degrees: f64) -> [StripPattern; 2] {
-    let projector = SurfaceProjector::new(&reference.mesh);
-    [0, 1].map(|k| {
+/// The strips of a net's families: `width`, measured with `projector` (built on `reference`'s
+/// mesh) and judged with `tolerance_degrees`.
+pub(crate) struct FamilyStrips<'a> {
+    pub net: &'a NetMesh,
+    pub reference: &'a Reference,
+    pub projector: &'a SurfaceProjector<'a>,
+    pub width: f64,
+    pub tolerance_degrees: f64,
+}
+
+impl FamilyStrips<'_> {
+    /// Family `k`'s strips on the fitted `rulings` (one entry per polyline), judged at the angle
+    /// `theta` (along the polylines' direction); without one (a constant slope prescribes no
+    /// angle) each strip at its own mean angle. A strip's `curve` and `level` are its polyline's
+    /// index.
+    pub fn build(&self, k: usize, rulings: &[Option<Vec<Vec3>>], theta: Option<f64>) -> StripPattern {
+        let (net, reference, width) = (self.net, self.reference, self.width);
         let (mut strips, mut skipped) = (Vec::new(), Vec::new());
-        for (index, (line, lines)) in net.polylines(k).iter().zip(&rulings[k]).enumerate() {
+        for (index, (line, lines)) in net.polylines(k).iter().zip(rulings).enumerate() {
             let centre: Vec<Vec3> = line.iter().map(|&v| net.positions()[v as usize]).collect();
             let Some(lines) = lines else {
                 let warning = if centre.len() < 3 { StripWarning::TooFewPoints { points: centre.len() } } else { StripWarning::SolverFailed { message: "no developable strip of planar quads fits this polyline".into() } };
@@ -24,7 +33,7 @@ pub(crate) fn net_strips(net: &NetMesh, reference: &Reference, rulings: &Polylin
                 continue;
             };
             let normals: Vec<Vec3> = centre.iter().map(|c| reference.closest(c).1).collect();
-            let theta = thetas[k].unwrap_or_else(|| mean_angle(&centre, &normals));
+            let theta = theta.unwrap_or_else(|| mean_angle(&centre, &normals));
             let (sin, cos) = theta.to_radians().sin_cos();
             let targets: Vec<Vec3> = (0..centre.len())
                 .map(|i| {
@@ -40,7 +49,7 @@ pub(crate) fn net_strips(net: &NetMesh, reference: &Reference, rulings: &Polylin
             let toward: f64 = lines.iter().zip(&targets).map(|(d, t)| d.dot(t)).sum();
             let rulings: Vec<Vec3> = lines.iter().map(|d| if toward < 0.0 { -d } else { *d }).collect();
             let strip_lines = StripLines { curve: index, level: index as f64, centre, binormals, rulings };
-            let strip = strip_with_rulings(&projector, strip_lines, width, theta, reference.diagonal, Vec::new());
+            let strip = strip_with_rulings(self.projector, strip_lines, width, theta, reference.diagonal, Vec::new());
             if strip.is_finite() {
                 strips.push(strip);
             } else {
@@ -48,9 +57,9 @@ pub(crate) fn net_strips(net: &NetMesh, reference: &Reference, rulings: &Polylin
             }
         }
         let metrics = PatternMetrics::from_strips(strips.iter().map(|s| &s.metrics));
-        let verdict = Verdict::judge(&strips, tolerance_degrees);
+        let verdict = Verdict::judge(&strips, self.tolerance_degrees);
         StripPattern { strips, skipped, metrics, verdict }
-    })
+    }
 }
 
 /// The mean signed angle (Sec. 3.1) between the discrete binormals of `centre` and `normals` at

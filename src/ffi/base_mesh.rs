@@ -472,8 +472,7 @@ pub unsafe extern "C" fn lml_base_mesh_strips(base_mesh: *const LmlBaseMesh, k: 
         if k > 1 {
             return Err(Failure::argument("k", format!("a net has families 0 (rows) and 1 (columns), got {k}")));
         }
-        let [rows, columns] = base_mesh.solver.strips(width, tolerance_degrees)?;
-        let pattern = if k == 0 { rows } else { columns };
+        let pattern = base_mesh.solver.family_strips(k as usize, width, tolerance_degrees)?;
         let status = if pattern.verdict.is_acceptable() {
             LmlStatus::Ok
         } else {

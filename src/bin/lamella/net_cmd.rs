@@ -31,17 +31,17 @@ use std::time::Instant;
 /// Iterations per `step` between progress notes.
 const STEP: usize = 10;
 
-/// Parses a pair of families given to `flag` (`--families`, `--types`): two comma-separated
-/// names, `P<θ>` (pseudo-geodesics of angle θ in degrees, in (0, 180)), `G` (geodesics) or `A`
-/// (asymptotic curves).
-pub fn parse_families(flag: &str, text: &str) -> CliResult<Vec<Family>> {
-    let families: Vec<Family> = text.split(',').map(|name| parse_family(flag, name.trim())).collect::<CliResult<_>>()?;
+/// Parses `--families`: two comma-separated names, each as [`parse_family`] reads it.
+fn parse_families(text: &str) -> CliResult<Vec<Family>> {
+    let families: Vec<Family> = text.split(',').map(|name| parse_family("--families", name.trim())).collect::<CliResult<_>>()?;
     if families.len() != 2 {
-        return Err(CliError::bad_input(format!("{flag}: a net has two families, got {} in '{}'", families.len(), lamella::input::clip(text))));
+        return Err(CliError::bad_input(format!("--families: a net has two families, got {} in '{}'", families.len(), lamella::input::clip(text))));
     }
     Ok(families)
 }
 
+/// Parses one family given to `flag` (`--families`, `--types`): `P<θ>` (pseudo-geodesics of
+/// angle θ in degrees, in (0, 180)), `G` (geodesics) or `A` (asymptotic curves).
 pub fn parse_family(flag: &str, name: &str) -> CliResult<Family> {
     let bad = || CliError::bad_input(format!("{flag}: '{}' is not P<θ>, G or A", lamella::input::clip(name)));
     match name {
@@ -81,7 +81,7 @@ fn start(args: &NetArgs) -> CliResult<(NetSolver, TriMesh, String)> {
         return Ok((solver, mesh, format!("net session {}", path.display())));
     }
     // Invariant: clap requires --families unless --resume is given.
-    let families = parse_families("--families", args.families.as_deref().ok_or_else(|| CliError::bad_input("give --families"))?)?;
+    let families = parse_families(args.families.as_deref().ok_or_else(|| CliError::bad_input("give --families"))?)?;
     let mut params = NetParams::new(families[0], families[1]);
     params.intersection_degrees = args.angle;
     params.min_intersection_degrees = args.min_angle;
