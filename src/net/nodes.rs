@@ -1,21 +1,25 @@
-//! The nodes of a gridshell (paper Sec. 5.1): where a strip of one family crosses a strip of the
-//! other. At each crossing of the net ([`super::QuadNet`]) the strip of each family built on that
-//! level is located, and the node gets both strip ids, its arc length along each strip's centre
+//! The nodes of a gridshell (paper Sec. 5.1): where a strip of one family crosses a strip of
+//! another. At each crossing of the net ([`super::QuadNet`]) or web ([`super::Web`]) the strip of
+//! each family built on that level is located, and the node gets both families, both strip ids, its arc length along each strip's centre
 //! line, the node axis (the mean of the two strips' rulings there), the angle between the two
 //! rulings (0 for a torsion-free node, Sec. 5.2), and each strip's Sec. 5.1 diagnostics at its
 //! centre-line vertex nearest to the node (conical curvature, binormal–ruling angle, Prop. 2's
 //! offset, the singular point of the ruling).
 
 use super::quad_net::QuadNet;
+use super::web::Web;
 use crate::mesh::Vec3;
 use crate::strips::{RectifyingStrip, StripPattern, VertexDiagnostics};
 
 /// One node.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Node {
-    /// Index of the crossing in [`QuadNet::vertices`].
+    /// Index of the crossing in [`QuadNet::vertices`] (or [`Web::vertices`]).
     pub vertex: usize,
-    /// Index of the strip of each family (into its pattern's `strips`).
+    /// The two families that cross here, the smaller first (`[0, 1]` in a net; a 3-web's
+    /// vertex where all three cross has a node for each pair).
+    pub families: [usize; 2],
+    /// Index of the strip of each of the two families (into its pattern's `strips`).
     pub strips: [usize; 2],
     /// Arc length of the node along each strip's centre line, from its first point.
     pub arc_lengths: [f64; 2],
@@ -43,18 +47,57 @@ struct OnStrip {
 /// `net.levels[k]`). A crossing becomes a node when each family has a strip on its level within
 /// `tolerance` (a length) of it; others (e.g. where a strip was skipped) are left out.
 pub fn net_nodes(net: &QuadNet, patterns: [&StripPattern; 2], tolerance: f64) -> Vec<Node> {
-    let diagnostics: [Vec<Vec<VertexDiagnostics>>; 2] = patterns.map(|p| p.strips.iter().map(RectifyingStrip::diagnostics).collect());
+    let finder = NodeFinder::new(&patterns, tolerance);
+    net.vertices
+        .iter()
+        .enumerate()
+        .filter_map(|(index, v)| finder.node(index, &v.position, [(0, net.levels[0][v.i]), (1, net.levels[1][v.j])]))
+        .collect()
+}
+
+/// The nodes of `web` with the strips `patterns[k]` of each family (built on the levels
+/// `web.levels.levels[k]`): at each vertex, one node per pair of families crossing there (three
+/// at a 3-web's vertex, one at a Kagome pattern's), as [`net_nodes`].
+pub fn web_nodes(web: &Web, patterns: [&StripPattern; 3], tolerance: f64) -> Vec<Node> {
+    let finder = NodeFinder::new(&patterns, tolerance);
     let mut nodes = Vec::new();
-    for (index, vertex) in net.vertices.iter().enumerate() {
-        let found = [(0, vertex.i), (1, vertex.j)].map(|(k, level)| nearest_strip(patterns[k], net.levels[k][level], &vertex.position, tolerance));
-        let [Some((s0, a)), Some((s1, b))] = found else { continue };
+    for (index, vertex) in web.vertices.iter().enumerate() {
+        let through: Vec<(usize, f64)> = (0..3).filter_map(|k| vertex.levels[k].map(|l| (k, web.levels.levels[k][l]))).collect();
+        for (x, &first) in through.iter().enumerate() {
+            for &second in &through[x + 1..] {
+                nodes.extend(finder.node(index, &vertex.position, [first, second]));
+            }
+        }
+    }
+    nodes
+}
+
+/// Finds the strips through a crossing and makes the node of two of them.
+struct NodeFinder<'a> {
+    patterns: &'a [&'a StripPattern],
+    /// Per family and strip, the diagnostics of every centre-line vertex.
+    diagnostics: Vec<Vec<Vec<VertexDiagnostics>>>,
+    tolerance: f64,
+}
+
+impl<'a> NodeFinder<'a> {
+    fn new(patterns: &'a [&'a StripPattern], tolerance: f64) -> Self {
+        let diagnostics = patterns.iter().map(|p| p.strips.iter().map(RectifyingStrip::diagnostics).collect()).collect();
+        NodeFinder { patterns, diagnostics, tolerance }
+    }
+
+    /// The node at crossing `index` (at `position`) of the strips of the two `(family, level)`s,
+    /// if each has a strip on its level within the tolerance.
+    fn node(&self, index: usize, position: &Vec3, crossing: [(usize, f64); 2]) -> Option<Node> {
+        let [(k0, level0), (k1, level1)] = crossing;
+        let (s0, a) = nearest_strip(self.patterns[k0], level0, position, self.tolerance)?;
+        let (s1, b) = nearest_strip(self.patterns[k1], level1, position, self.tolerance)?;
         let second = if a.ruling.dot(&b.ruling) < 0.0 { -b.ruling } else { b.ruling };
         let axis = (a.ruling + second).try_normalize(0.0).unwrap_or(a.ruling);
         let ruling_angle_degrees = a.ruling.dot(&second).clamp(-1.0, 1.0).acos().to_degrees();
-        let diagnostics = [diagnostics[0][s0][a.vertex], diagnostics[1][s1][b.vertex]];
-        nodes.push(Node { vertex: index, strips: [s0, s1], arc_lengths: [a.arc_length, b.arc_length], position: vertex.position, axis, ruling_angle_degrees, diagnostics });
+        let diagnostics = [self.diagnostics[k0][s0][a.vertex], self.diagnostics[k1][s1][b.vertex]];
+        Some(Node { vertex: index, families: [k0, k1], strips: [s0, s1], arc_lengths: [a.arc_length, b.arc_length], position: *position, axis, ruling_angle_degrees, diagnostics })
     }
-    nodes
 }
 
 /// The strip on `level` whose centre line passes nearest to `point`, within `tolerance`.

@@ -1,13 +1,16 @@
-//! What a net optimisation aims at (paper Sec. 4.1): one curve family per field, the weights of
-//! each field's terms (Eq. 12) and of the intersection-angle term between them.
+//! What a net optimisation aims at (paper Sec. 4.1–4.2): one curve family per field (two for a
+//! net, three for a 3-web), the weights of each field's terms (Eq. 12), of the
+//! intersection-angle term between them and, for a 3-web, of Eq. 18 (`F + G + H = 0`).
 
 use crate::field::{Family, FieldError, FieldParams};
 use serde::{Deserialize, Serialize};
 
-/// Parameters of a net of two families.
+/// Parameters of a net of two families or a 3-web of three.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct NetParams {
-    /// The family of each field (`F` first, then `G`), taken by name ([`Family::by_name`]).
+    /// The family of each field, taken by name ([`Family::by_name`]): two for a net (`F`, `G`),
+    /// three for a 3-web, whose third family is the diagonal one (the paper's `G` in Eq. 18:
+    /// `F + G + H = 0`, its level sets the diagonals `i + j = const` of the first two's net).
     pub families: Vec<Family>,
     /// Weights, warm-up schedule, tolerance and solver settings, shared by every field (its
     /// `family` and `gradient_target` are not used: each field keeps the mean `‖∇‖` of its start).
@@ -22,6 +25,20 @@ pub struct NetParams {
     pub min_intersection_degrees: f64,
     /// Weight of the minimum-angle row. Default 10.
     pub min_intersection_weight: f64,
+    /// 3-webs: weight of Eq. 18's row `F + G + H` per vertex (on the normalised problem, each
+    /// field of mean `‖∇‖` 1). Default 1e4: held almost exactly (about 1e-7 of the fields'
+    /// range), as the extracted web's third family is read from the first two (the diagonals),
+    /// its strips from the third field.
+    pub web_weight: f64,
+    /// 3-webs: the factor on the third field's terms at the final weight stage. Default 1 (the
+    /// authors' implementation uses 3; on z = xy/5 an AAG web's geodesics came out no closer with
+    /// it, and Eq. 18 held less tightly).
+    pub third_family_weight: f64,
+    /// 3-webs: the factor on the third field's terms in the first weight stage, as a fraction of
+    /// [`NetParams::third_family_weight`]. It grows geometrically to 1 at the final stage
+    /// (Sec. 4.2: the third family joins gradually; the authors advise starting it small and
+    /// growing it). Default 0.1; 1 holds it constant.
+    pub third_family_start: f64,
 }
 
 impl NetParams {
@@ -35,14 +52,39 @@ impl NetParams {
             intersection_weight: 1.0,
             min_intersection_degrees: 30.0,
             min_intersection_weight: 10.0,
+            web_weight: 1e4,
+            third_family_weight: 1.0,
+            third_family_start: 0.1,
         }
+    }
+
+    /// Defaults for a 3-web of the families `f`, `h` and the diagonal family `g` (e.g. AAG:
+    /// `web(A, A, G)`), as [`NetParams::new`] with Eq. 18 held.
+    pub fn web(f: Family, h: Family, g: Family) -> NetParams {
+        NetParams { families: vec![f.by_name(), h.by_name(), g.by_name()], ..NetParams::new(f, h) }
+    }
+
+    /// Whether these are the parameters of a 3-web (three families).
+    pub fn is_web(&self) -> bool {
+        self.families.len() == 3
+    }
+
+    /// The factor on the third field's terms in weight stage `stage`:
+    /// `weight · start^((S − stage)/S)` for `S` warm-up stages ([`NetParams::third_family_weight`],
+    /// [`NetParams::third_family_start`]).
+    pub fn third_family_factor(&self, stage: usize) -> f64 {
+        let stages = self.field.schedule.len();
+        if stages == 0 || stage >= stages {
+            return self.third_family_weight;
+        }
+        self.third_family_weight * self.third_family_start.powf((stages - stage) as f64 / stages as f64)
     }
 
     /// Checks every parameter, naming the first one out of range.
     pub fn validate(&self) -> Result<(), FieldError> {
         let invalid = |name: &'static str, message: String| Err(FieldError::InvalidParameter { name, message });
-        if self.families.len() != 2 {
-            return invalid("families", format!("a net has two families, got {}", self.families.len()));
+        if !(2..=3).contains(&self.families.len()) {
+            return invalid("families", format!("a net has two families and a 3-web three, got {}", self.families.len()));
         }
         for family in &self.families {
             crate::field::validate_params(&FieldParams { family: *family, ..self.field.clone() })?;
@@ -58,7 +100,10 @@ impl NetParams {
         if !(self.min_intersection_degrees.is_finite() && (0.0..90.0).contains(&self.min_intersection_degrees)) {
             return invalid("min_intersection_degrees", format!("must lie in [0°, 90°), got {}", self.min_intersection_degrees));
         }
-        for (name, value) in [("intersection_weight", self.intersection_weight), ("min_intersection_weight", self.min_intersection_weight)] {
+        if !(self.third_family_start.is_finite() && self.third_family_start > 0.0 && self.third_family_start <= 1.0) {
+            return invalid("third_family_start", format!("must lie in (0, 1], got {}", self.third_family_start));
+        }
+        for (name, value) in [("intersection_weight", self.intersection_weight), ("min_intersection_weight", self.min_intersection_weight), ("web_weight", self.web_weight), ("third_family_weight", self.third_family_weight)] {
             if !(value.is_finite() && value >= 0.0) {
                 return invalid(name, format!("must be finite and ≥ 0, got {value}"));
             }

@@ -1,12 +1,14 @@
 //! Several level-set problems of Eq. 12 on one mesh as one sparse least-squares problem, coupled
-//! by the intersection-angle term of Sec. 4.1.
+//! by the intersection-angle term of Sec. 4.1 and, for a 3-web, by Eq. 18.
 //!
-//! Variables: the fields one after the other (`F` at `[0, n)`, `G` at `[n, 2n)`), then each
+//! Variables: the fields one after the other (field `k` at `[k n, (k + 1) n)`), then each
 //! field's auxiliaries (pseudo-geodesics: `b`, `u` per curve vertex, eliminated by Schur
-//! complement). Blocks: every block of the first field's [`FieldProblem`], then the second's,
-//! then one intersection block per face. Each field's problem sees the variables from the start
-//! of its own field on (`x[k n..]`), with its auxiliaries placed where they live in the whole
-//! vector; its block variables are shifted by `k n` once, here.
+//! complement). Blocks: every block of the first field's [`FieldProblem`], then the second's (and
+//! the third's), then one intersection block per face and pair of fields (a net: the pair 0–1; a
+//! 3-web also 0–2 and 1–2, their target rows weightless: only the minimum angle holds there),
+//! then for a 3-web one Eq. 18 row per vertex, `√w (F + G + H)`. Each field's problem sees the
+//! variables from the start of its own field on (`x[k n..]`), with its auxiliaries placed where
+//! they live in the whole vector; its block variables are shifted by `k n` once, here.
 
 use super::intersection::{self, IntersectionTerm};
 use crate::field::{Family, FieldProblem, Weights};
@@ -23,21 +25,35 @@ pub struct NetProblem {
     /// field's blocks); the first field's are its own.
     shifted_offsets: Vec<Vec<usize>>,
     shifted_variables: Vec<Vec<u32>>,
-    /// Per face: `F` at its corners, then `G` at them.
+    /// The pairs of fields whose intersection angle is held: `(0, 1)`, and for a 3-web `(0, 2)`
+    /// and `(1, 2)`.
+    pairs: Vec<(usize, usize)>,
+    /// Per pair and face: the first field at the face's corners, then the second at them.
     face_variables: Vec<u32>,
+    /// The intersection term of the pair 0–1; the other pairs hold only its minimum angle.
     intersection: IntersectionTerm,
+    /// Per vertex of a 3-web: its value in each field (empty for a net).
+    web_variables: Vec<u32>,
+    /// `√` of the weight of Eq. 18's rows.
+    web_scale: f64,
+}
+
+/// The intersection blocks' target rows are weightless for every pair but the first.
+fn pair_term(term: &IntersectionTerm, pair: usize) -> IntersectionTerm {
+    if pair == 0 { *term } else { IntersectionTerm { target_weight: 0.0, ..*term } }
 }
 
 impl NetProblem {
-    /// The problem of one field per family on `mesh` (unit-scaled), each with `weights` and the
-    /// gradient target 1, coupled by `intersection`.
-    pub(crate) fn new(mesh: &TriMesh, families: &[Family], weights: Weights, intersection: IntersectionTerm) -> NetProblem {
+    /// The problem of one field per family on `mesh` (unit-scaled), field `k` with `weights`
+    /// times `factors[k]` and the gradient target 1, coupled by `intersection` and, for three
+    /// families, by Eq. 18 with weight `web_weight`.
+    pub(crate) fn new(mesh: &TriMesh, families: &[Family], weights: Weights, factors: &[f64], intersection: IntersectionTerm, web_weight: f64) -> NetProblem {
         let n = mesh.vertex_count();
         let count = families.len();
         let mut fields: Vec<FieldProblem> = Vec::with_capacity(count);
         let mut auxiliary_start = count * n;
         for (k, &family) in families.iter().enumerate() {
-            let field = FieldProblem::with_auxiliary_base(mesh.clone(), family, weights, 1.0, auxiliary_start - k * n);
+            let field = FieldProblem::with_auxiliary_base(mesh.clone(), family, scaled(weights, factors[k]), 1.0, auxiliary_start - k * n);
             auxiliary_start += FieldProblem::auxiliaries_per_vertex(family) * field.curve_vertices().len();
             fields.push(field);
         }
@@ -57,8 +73,13 @@ impl NetProblem {
             shifted_offsets.push(offsets);
             shifted_variables.push(variables);
         }
-        let face_variables = mesh.faces().iter().flat_map(|face| face.iter().copied().chain(face.iter().map(|&v| v + n as u32))).collect();
-        NetProblem { fields, vertex_count: n, block_starts, shifted_offsets, shifted_variables, face_variables, intersection }
+        let pairs: Vec<(usize, usize)> = if count == 3 { vec![(0, 1), (0, 2), (1, 2)] } else { vec![(0, 1)] };
+        let face_variables = pairs
+            .iter()
+            .flat_map(|&(a, b)| mesh.faces().iter().flat_map(move |face| face.map(|v| v + (a * n) as u32).into_iter().chain(face.map(|v| v + (b * n) as u32))))
+            .collect();
+        let web_variables = if count == 3 { (0..n as u32).flat_map(|v| [v, v + n as u32, v + 2 * n as u32]).collect() } else { Vec::new() };
+        NetProblem { fields, vertex_count: n, block_starts, shifted_offsets, shifted_variables, pairs, face_variables, intersection, web_variables, web_scale: web_weight.sqrt() }
     }
 
     /// The single-field problems, in order.
@@ -80,15 +101,39 @@ impl NetProblem {
         &self.intersection
     }
 
-    pub(crate) fn set_weights(&mut self, weights: Weights) {
-        self.fields.iter_mut().for_each(|field| field.set_weights(weights));
+    /// Field `k`'s terms get `weights` times `factors[k]`.
+    pub(crate) fn set_weights(&mut self, weights: Weights, factors: &[f64]) {
+        self.fields.iter_mut().zip(factors).for_each(|(field, &factor)| field.set_weights(scaled(weights, factor)));
     }
 
-    /// Which field block `b` belongs to and its index there; `None` for an intersection block.
-    fn locate(&self, b: usize) -> Option<(usize, usize)> {
+    /// Which block `b` is.
+    fn locate(&self, b: usize) -> Block {
         let k = self.block_starts.partition_point(|&start| start <= b) - 1;
-        (k < self.fields.len()).then(|| (k, b - self.block_starts[k]))
+        if k < self.fields.len() {
+            return Block::Field(k, b - self.block_starts[k]);
+        }
+        let faces = self.mesh().face_count();
+        let local = b - self.block_starts[self.fields.len()];
+        if local < self.pairs.len() * faces {
+            Block::Intersection(local / faces, local % faces)
+        } else {
+            Block::Web(local - self.pairs.len() * faces)
+        }
     }
+}
+
+/// What a block of the problem holds.
+enum Block {
+    /// Field `k`'s block with the given index in its own problem.
+    Field(usize, usize),
+    /// The intersection rows of pair `p` on face `f`.
+    Intersection(usize, usize),
+    /// Eq. 18's row at a vertex.
+    Web(usize),
+}
+
+fn scaled(weights: Weights, factor: f64) -> Weights {
+    Weights { fair: weights.fair * factor, grad: weights.grad * factor, angle: weights.angle * factor }
 }
 
 impl LeastSquaresProblem for NetProblem {
@@ -98,34 +143,43 @@ impl LeastSquaresProblem for NetProblem {
     }
 
     fn block_count(&self) -> usize {
-        self.block_starts[self.fields.len()] + self.mesh().face_count()
+        self.block_starts[self.fields.len()] + self.pairs.len() * self.mesh().face_count() + self.web_variables.len() / 3
     }
 
     fn block_variables(&self, b: usize) -> &[u32] {
         match self.locate(b) {
-            Some((0, local)) => self.fields[0].block_variables(local),
-            Some((k, local)) => &self.shifted_variables[k][self.shifted_offsets[k][local]..self.shifted_offsets[k][local + 1]],
-            None => {
-                let f = b - self.block_starts[self.fields.len()];
-                &self.face_variables[6 * f..6 * f + 6]
+            Block::Field(0, local) => self.fields[0].block_variables(local),
+            Block::Field(k, local) => &self.shifted_variables[k][self.shifted_offsets[k][local]..self.shifted_offsets[k][local + 1]],
+            Block::Intersection(p, f) => {
+                let at = 6 * (p * self.mesh().face_count() + f);
+                &self.face_variables[at..at + 6]
             }
+            Block::Web(v) => &self.web_variables[3 * v..3 * v + 3],
         }
     }
 
     fn block_residual_count(&self, b: usize) -> usize {
         match self.locate(b) {
-            Some((k, local)) => self.fields[k].block_residual_count(local),
-            None => intersection::ROWS,
+            Block::Field(k, local) => self.fields[k].block_residual_count(local),
+            Block::Intersection(..) => intersection::ROWS,
+            Block::Web(_) => 1,
         }
     }
 
     fn evaluate_block(&self, b: usize, x: &[f64], residuals: &mut [f64], jacobian: Option<&mut [f64]>) {
+        let n = self.vertex_count;
         match self.locate(b) {
-            Some((k, local)) => self.fields[k].evaluate_block(local, &x[self.field_start(k)..], residuals, jacobian),
-            None => {
-                let f = b - self.block_starts[self.fields.len()];
-                let n = self.vertex_count;
-                intersection::evaluate(self.mesh(), &self.intersection, &x[..n], &x[n..2 * n], f, residuals, jacobian);
+            Block::Field(k, local) => self.fields[k].evaluate_block(local, &x[self.field_start(k)..], residuals, jacobian),
+            Block::Intersection(p, f) => {
+                let (a, c) = self.pairs[p];
+                let term = pair_term(&self.intersection, p);
+                intersection::evaluate(self.mesh(), &term, &x[a * n..(a + 1) * n], &x[c * n..(c + 1) * n], f, residuals, jacobian);
+            }
+            Block::Web(v) => {
+                residuals[0] = self.web_scale * (x[v] + x[n + v] + x[2 * n + v]);
+                if let Some(jac) = jacobian {
+                    jac.fill(self.web_scale);
+                }
             }
         }
     }

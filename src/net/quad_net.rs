@@ -101,18 +101,23 @@ fn levels_within(levels: &[f64], values: &[f64; 3]) -> std::ops::Range<usize> {
 fn runs(lines: usize, steps: usize, at: impl Fn(usize, usize) -> Option<u32>) -> Vec<Vec<u32>> {
     let mut out = Vec::new();
     for line in 0..lines {
-        let mut run = Vec::new();
-        for step in 0..=steps {
-            match (step < steps).then(|| at(line, step)).flatten() {
-                Some(v) => run.push(v),
-                None => {
-                    if run.len() >= 2 {
-                        out.push(std::mem::take(&mut run));
-                    }
-                    run.clear();
+        push_runs(&mut out, (0..steps).map(|step| at(line, step)));
+    }
+    out
+}
+
+/// Appends to `out` the maximal runs (≥ 2 vertices) of consecutive existing vertices of `points`.
+pub(super) fn push_runs(out: &mut Vec<Vec<u32>>, points: impl Iterator<Item = Option<u32>>) {
+    let mut run = Vec::new();
+    for point in points.chain(std::iter::once(None)) {
+        match point {
+            Some(v) => run.push(v),
+            None => {
+                if run.len() >= 2 {
+                    out.push(std::mem::take(&mut run));
                 }
+                run.clear();
             }
         }
     }
-    out
 }

@@ -16,6 +16,19 @@ pub struct IntersectionReport {
     pub min_energy: f64,
 }
 
+/// How a 3-web holds together (Eq. 18) and how its third family crosses the other two.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct WebReport {
+    /// Largest and RMS `|F + G + H|` over the vertices, relative to the largest of the three
+    /// fields' ranges.
+    pub residual_max: f64,
+    pub residual_rms: f64,
+    /// The factor on the third field's terms in the weight stage in force.
+    pub third_family_factor: f64,
+    /// How the third family crosses the first and the second (minimum-angle rows only).
+    pub intersections: [IntersectionReport; 2],
+}
+
 /// State of a net optimisation after a `step`.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct NetReport {
@@ -26,7 +39,10 @@ pub struct NetReport {
     pub stage: usize,
     /// Each family's own report (energies, angle errors, singular vertices, flips) in field order.
     pub families: Vec<StepReport>,
+    /// How the first two families cross.
     pub intersection: IntersectionReport,
+    /// A 3-web's Eq. 18 residual and third-family crossings; `None` for a net.
+    pub web: Option<WebReport>,
     /// The weighted energy the solver minimises.
     pub total_energy: f64,
     /// Levenberg–Marquardt damping μ after the last iteration.

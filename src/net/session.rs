@@ -15,7 +15,7 @@ use serde::{Deserialize, Serialize};
 /// First bytes of every saved net session.
 pub const NET_SESSION_MAGIC: [u8; 4] = *b"LMLN";
 /// Version of the net session layout written by this library.
-pub const NET_SESSION_VERSION: u32 = 1;
+pub const NET_SESSION_VERSION: u32 = 2;
 
 #[derive(Serialize, Deserialize)]
 struct Session {
@@ -146,6 +146,21 @@ mod tests {
         assert_eq!(restored.to_bytes(), bytes);
         let (a, b) = (original.step(6).expect("steps"), restored.step(6).expect("steps"));
         assert_eq!(a, b);
+        assert_eq!(bits(&restored), bits(&original));
+    }
+
+    #[test]
+    fn a_restored_web_continues_bit_for_bit() {
+        let mesh = hall_roof(300).into_mesh().expect("roof");
+        let f: Vec<f64> = mesh.positions().iter().map(|p| p.x + 0.1 * p.y).collect();
+        let h: Vec<f64> = mesh.positions().iter().map(|p| p.y - 0.1 * p.x).collect();
+        let params = NetParams::web(Family::PseudoGeodesic { theta_degrees: 60.0 }, Family::PseudoGeodesic { theta_degrees: 60.0 }, Family::Geodesic);
+        let mut original = NetSolver::new(&mesh, &[f, h], params).expect("solver");
+        original.step(3).expect("steps");
+        let mut restored = NetSolver::from_bytes(&original.to_bytes()).expect("restores");
+        let (a, b) = (original.step(5).expect("steps"), restored.step(5).expect("steps"));
+        assert_eq!(a, b);
+        assert!(a.web.is_some());
         assert_eq!(bits(&restored), bits(&original));
     }
 

@@ -11,13 +11,14 @@ use crate::mesh::TriMesh;
 /// family across the other.
 pub const START_CROSSING_DEGREES: f64 = 45.0;
 
-/// One start field per family of `params` on `mesh`: the first family's winner of the start
-/// search, then the second family's winner among the candidates crossing it at
+/// One start field per family of `params` on `mesh` (for a 3-web: per family of the first two,
+/// the third starts as `−F − H`, see [`super::NetSolver::new`]): the first family's winner of the
+/// start search, then the second family's winner among the candidates crossing it at
 /// [`START_CROSSING_DEGREES`] or more on average. Each field is the one its short solve reached.
 pub fn net_start(mesh: &TriMesh, params: &NetParams, options: &SearchOptions) -> Result<Vec<Vec<f64>>, SearchError> {
     params.validate().map_err(SearchError::Field)?;
     let mut fields: Vec<Vec<f64>> = Vec::with_capacity(params.families.len());
-    for &family in &params.families {
+    for &family in &params.families[..2] {
         let mut search = StartSearch::new(mesh, FieldParams { family, ..params.field.clone() }, options.clone()).map_err(SearchError::Field)?;
         if let Some(first) = fields.first() {
             search = search.crossing(first, START_CROSSING_DEGREES).map_err(SearchError::Field)?;

@@ -60,7 +60,7 @@ fn worst_catenary_deviation(mesh: &TriMesh, field: &[f64], theta: f64) -> f64 {
 
 /// The signed angle (Sec. 3.1) of each strip quad's plane against the exact normal `normal`:
 /// the quad's direction across its centre line, `ê × N̂`, compared with θ (without sign at 0°).
-fn worst_quad_angle_error(pattern: &StripPattern, theta: f64, normal: impl Fn(&Vec3) -> Vec3) -> f64 {
+pub(crate) fn worst_quad_angle_error(pattern: &StripPattern, theta: f64, normal: impl Fn(&Vec3) -> Vec3) -> f64 {
     let mut worst: f64 = 0.0;
     for strip in &pattern.strips {
         for j in 0..strip.centre.len() - 1 {

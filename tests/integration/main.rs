@@ -60,6 +60,7 @@ mod mesh_topology;
 mod mesh_validation;
 
 mod net_two_families;
+mod net_webs;
 
 mod obj_io;
 

@@ -17,7 +17,7 @@ use lamella::mesh::Vec3;
 use lamella::strips::RectifyingStrip;
 use lamella::surfaces::{hall_roof, hyperbolic_paraboloid, HallRoofSection, HyperbolicParaboloid};
 
-fn hypar(target_vertices: usize) -> TriMesh {
+pub(crate) fn hypar(target_vertices: usize) -> TriMesh {
     let surface = HyperbolicParaboloid { c: 5.0, half_width: 5.0, target_vertices, irregularity: 0.5, seed: 8 };
     hyperbolic_paraboloid(&surface).expect("valid surface").into_mesh().expect("valid mesh")
 }
@@ -79,7 +79,7 @@ fn strips_of(mesh: &TriMesh, solver: &NetSolver, k: usize, count: usize, theta: 
 /// The exact unit normal of the hall roof at `p`: the gradient of
 /// `F = y² + (z − c(x))² − R(x)²`, with the arch centre height `c = rise − R` and radius `R` of the
 /// cross-section at `x` (derivatives in `x` by central differences).
-fn roof_normal(p: &Vec3) -> Vec3 {
+pub(crate) fn roof_normal(p: &Vec3) -> Vec3 {
     let centre_and_radius = |x: f64| {
         let section = HallRoofSection::at(x);
         (section.rise - section.radius(), section.radius())
@@ -174,7 +174,7 @@ fn a_pp_net_of_sixty_degrees_on_the_hall_roof_is_reported_as_it_is() {
 }
 
 /// The linear interpolation of `field` on `face` of `mesh` at `point` (a point of that face).
-fn interpolated(mesh: &TriMesh, field: &[f64], face: usize, point: &Vec3) -> f64 {
+pub(crate) fn interpolated(mesh: &TriMesh, field: &[f64], face: usize, point: &Vec3) -> f64 {
     let [a, b, c] = mesh.faces()[face].map(|v| v as usize);
     let p = mesh.positions();
     let (e1, e2, d) = (p[b] - p[a], p[c] - p[a], point - p[a]);
@@ -186,7 +186,7 @@ fn interpolated(mesh: &TriMesh, field: &[f64], face: usize, point: &Vec3) -> f64
 }
 
 /// The point at arc length `arc` along the polyline `points` (clamped to its ends).
-fn point_at_arc_length(points: &[Vec3], arc: f64) -> Vec3 {
+pub(crate) fn point_at_arc_length(points: &[Vec3], arc: f64) -> Vec3 {
     let mut left = arc.max(0.0);
     for pair in points.windows(2) {
         let length = (pair[1] - pair[0]).norm();
