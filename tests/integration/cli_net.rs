@@ -110,6 +110,7 @@ fn the_asymptotic_net_of_a_hyperbolic_paraboloid_is_written_with_its_nodes() {
 fn family_names_and_angles_are_checked() {
     let dir = Scratch::new("net-bad");
     assert_bad_input(&dir.0, &["net", "--families", "P60", "--out", "o"], &["--families", "two families"]);
+    assert_bad_input(&dir.0, &["net", "--families", "A,A,G,G", "--out", "o"], &["--families", "a 3-web three"]);
     assert_bad_input(&dir.0, &["net", "--families", "P60,X", "--out", "o"], &["--families", "'X'"]);
     assert_bad_input(&dir.0, &["net", "--families", "P200,G", "--out", "o"], &["--families", "P200"]);
     assert_bad_input(&dir.0, &["net", "--families", "A,A", "--min-angle", "95", "--out", "o"], &["min_intersection_degrees"]);
@@ -151,7 +152,7 @@ fn a_net_crossing_below_the_minimum_angle_exits_3_and_says_where() {
     let families_missed = stderr(&output).contains("family A:");
     assert!(min < 84.0 || families_missed, "exit 3 with the families crossing at {min}° and no family missed");
     if min < 84.0 {
-        assert!(stderr(&output).contains(&format!("the families cross at {min:.1}°")), "{}", stderr(&output));
+        assert!(stderr(&output).contains(&format!("the first two families cross at {min:.1}°")), "{}", stderr(&output));
     }
 }
 
@@ -210,4 +211,82 @@ fn a_net_with_a_material_writes_workshop_files_for_both_families_with_the_nodes(
     assert!(circles >= nodes.len(), "{circles} node marks for {} node ends", nodes.len());
     let report = read_json(&out.join("report.json"));
     assert_eq!(report["fabrication"]["pieces"].as_array().map(Vec::len), Some(rows.len()));
+}
+
+/// The OBJ's `l` polylines under each `o` name.
+fn obj_groups(text: &str) -> std::collections::BTreeMap<String, Vec<Vec<usize>>> {
+    let mut groups = std::collections::BTreeMap::new();
+    let mut name = String::new();
+    for line in text.lines() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("o") => name = words.next().unwrap_or("").to_string(),
+            Some("l") => groups.entry(name.clone()).or_insert_with(Vec::new).push(words.map(|w| w.parse::<usize>().expect("index") - 1).collect()),
+            _ => {}
+        }
+    }
+    groups
+}
+
+#[test]
+fn an_aag_web_is_written_as_triangles_with_its_three_families_and_a_kagome_pattern_as_triangles_and_hexagons() {
+    let dir = Scratch::new("net-aag");
+    let mesh = hypar_obj(&dir);
+    let mesh = mesh.to_str().expect("path");
+    for (out, kagome) in [("web", false), ("kagome", true)] {
+        let mut args = vec!["net", "--mesh", mesh, "--families", "A,A,G", "--lines", "6", "--out", out, "--quiet"];
+        if kagome {
+            args.push("--kagome");
+        }
+        let output = lamella(&dir.0, &args);
+        let code = output.status.code();
+        assert!(code == Some(0) || code == Some(3), "exit {code:?}: {}", stderr(&output));
+        let out = dir.path(out);
+        for name in ["curves_2.obj", "strips_2.obj", "net.obj", "nodes.csv", "unrolled.svg", "report.json"] {
+            assert!(out.join(name).is_file(), "{name} missing");
+        }
+        let text = std::fs::read_to_string(out.join("net.obj")).expect("net.obj");
+        let (vertices, faces, _) = obj_elements(&text);
+        for p in &vertices {
+            assert!((p[2] - p[0] * p[1] / 5.0).abs() < 0.05, "{p:?} is off the surface");
+        }
+        let groups = obj_groups(&text);
+        assert!(["rows", "columns", "diagonals"].iter().all(|g| groups.get(*g).is_some_and(|lines| !lines.is_empty())), "{:?}", groups.keys());
+        // Each vertex lies on the polylines of two families (Kagome) or two or three (a 3-web).
+        let mut families_at = vec![0usize; vertices.len()];
+        for lines in groups.values() {
+            let mut on = vec![false; vertices.len()];
+            lines.iter().flatten().for_each(|&v| on[v] = true);
+            on.iter().enumerate().filter(|(_, o)| **o).for_each(|(v, _)| families_at[v] += 1);
+        }
+        let report = read_json(&out.join("report.json"));
+        let web = &report["web"];
+        assert_eq!(web["kagome"].as_bool(), Some(kagome), "{report}");
+        assert!(web["residual_max"].as_f64().expect("residual") <= 1e-6, "{report}");
+        if kagome {
+            assert!(families_at.iter().all(|&n| n == 2), "a Kagome vertex on {:?} families", families_at.iter().find(|&&n| n != 2));
+            assert!(faces.iter().all(|f| f.len() == 3 || f.len() == 6) && faces.iter().any(|f| f.len() == 6), "faces of {:?} sides", faces.iter().map(Vec::len).collect::<std::collections::BTreeSet<_>>());
+        } else {
+            assert!(families_at.iter().all(|&n| n == 2 || n == 3) && families_at.iter().filter(|&&n| n == 3).count() >= 10);
+            assert!(faces.len() >= 20 && faces.iter().all(|f| f.len() == 3), "{} faces", faces.len());
+            // The diagonals of a 3-web pass through vertices where rows and columns cross.
+            assert!(groups["diagonals"].iter().flatten().all(|&v| families_at[v] >= 2));
+        }
+        assert_eq!(report["web"]["hexagons"].as_u64(), Some(faces.iter().filter(|f| f.len() == 6).count() as u64));
+        // nodes.csv names strips of every pair of families.
+        let nodes = std::fs::read_to_string(out.join("nodes.csv")).expect("nodes.csv");
+        let pairs: std::collections::BTreeSet<(String, String)> = nodes
+            .lines()
+            .skip(1)
+            .map(|row| {
+                let cells: Vec<&str> = row.split(',').collect();
+                (cells[0][..2].to_string(), cells[1][..2].to_string())
+            })
+            .collect();
+        assert!(pairs.contains(&("f0".into(), "f2".into())) && pairs.contains(&("f1".into(), "f2".into())), "{pairs:?}");
+        assert_eq!(pairs.contains(&("f0".into(), "f1".into())), true, "{pairs:?}");
+    }
+    assert_bad_input(&dir.0, &["net", "--mesh", mesh, "--families", "A,A", "--kagome", "--out", "o"], &["--kagome", "three"]);
+    // optimise takes nets of rows and columns only and says so for a web.
+    assert_bad_input(&dir.0, &["optimise", "--net", "web/net.obj", "--types", "A,A", "--reference", mesh, "--out", "o"], &["diagonals"]);
 }

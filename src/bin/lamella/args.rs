@@ -399,10 +399,16 @@ pub struct FabricateArgs {
 pub struct NetArgs {
     #[command(flatten)]
     pub mesh: MeshArgs,
-    /// The two families, comma-separated: P<θ> (pseudo-geodesics of angle θ in degrees), G
-    /// (geodesics) or A (asymptotic curves), e.g. P60,P60 or A,A.
-    #[arg(long, value_name = "F,G", required_unless_present = "resume")]
+    /// The two families of a net or the three of a 3-web, comma-separated: P<θ>
+    /// (pseudo-geodesics of angle θ in degrees), G (geodesics) or A (asymptotic curves), e.g.
+    /// P60,P60 or A,A; a web's third family is the diagonal one (F + G + H = 0), e.g. A,A,G or
+    /// P60,P60,G.
+    #[arg(long, value_name = "F,G[,H]", required_unless_present = "resume")]
     pub families: Option<String>,
+    /// A 3-web's third family shifted by half a level spacing: a Kagome pattern (paper Fig. 1),
+    /// whose curves cross in pairs, the third family halfway between the others' crossings.
+    #[arg(long)]
+    pub kagome: bool,
     /// Continue a net optimisation saved by an earlier `net` (its net.bin: mesh, families,
     /// angles and both fields), bit for bit as if it had not stopped; --max-iterations includes
     /// the iterations it ran before.
@@ -412,10 +418,11 @@ pub struct NetArgs {
     /// [default: none, only --min-angle is held].
     #[arg(long, value_name = "DEGREES")]
     pub angle: Option<f64>,
-    /// Minimum intersection angle of the two families in degrees, in [0, 90).
+    /// Minimum intersection angle of the two families (of every two in a 3-web) in degrees, in [0, 90).
     #[arg(long, value_name = "DEGREES", default_value_t = 30.0)]
     pub min_angle: f64,
-    /// Level curves (strips) per family.
+    /// Level curves (strips) per family; in a 3-web, of the first two families at one even
+    /// spacing, the third family's levels being their diagonals.
     #[arg(long, value_name = "N", default_value_t = 10)]
     pub lines: usize,
     /// Strip width in metres [default: half the mean spacing of neighbouring curves].

@@ -1,6 +1,8 @@
 //! net.obj: a net of rows and columns (paper Sec. 3.5) as OBJ: its vertices, its quads as faces,
-//! then the rows after `o rows` and the columns after `o columns`, each an `l` polyline. `net`
-//! writes it from the crossings of its level sets; `optimise` reads it and writes the result.
+//! then the rows after `o rows` and the columns after `o columns`, each an `l` polyline (a 3-web:
+//! triangles or a Kagome pattern's triangles and hexagons, and its third family after
+//! `o diagonals`). `net` writes it from the crossings of its level sets; `optimise` reads a net's
+//! and writes the result.
 use crate::error::{CliError, CliResult};
 use crate::mesh_input::read_text;
 use lamella::base_mesh::NetMesh;
@@ -8,16 +10,18 @@ use lamella::mesh::Vec3;
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// The text of a net.obj, under the comment `title`.
-pub fn net_obj(title: &str, positions: &[Vec3], quads: &[[u32; 4]], rows: &[Vec<u32>], columns: &[Vec<u32>]) -> String {
+/// The text of a net.obj, under the comment `title`: `faces` of any size, then each family's
+/// polylines under its name (`rows`, `columns`, `diagonals`).
+pub fn net_obj<F: AsRef<[u32]>>(title: &str, positions: &[Vec3], faces: &[F], families: &[(&str, &[Vec<u32>])]) -> String {
     let mut text = format!("# {title}\n");
     for p in positions {
         let _ = writeln!(text, "v {} {} {}", p.x, p.y, p.z);
     }
-    for q in quads {
-        let _ = writeln!(text, "f {} {} {} {}", q[0] + 1, q[1] + 1, q[2] + 1, q[3] + 1);
+    for face in faces {
+        let indices: Vec<String> = face.as_ref().iter().map(|v| (v + 1).to_string()).collect();
+        let _ = writeln!(text, "f {}", indices.join(" "));
     }
-    for (name, lines) in [("rows", rows), ("columns", columns)] {
+    for &(name, lines) in families {
         let _ = writeln!(text, "o {name}");
         for line in lines {
             let indices: Vec<String> = line.iter().map(|v| (v + 1).to_string()).collect();
@@ -50,6 +54,7 @@ pub fn read_net_obj(path: &Path) -> CliResult<NetMesh> {
                 family = match tokens.next() {
                     Some("rows") => Some(0),
                     Some("columns") => Some(1),
+                    Some("diagonals") => return Err(bad(line, "a 3-web (`o diagonals`): optimise takes nets of rows and columns only")),
                     _ => None,
                 };
             }

@@ -74,7 +74,7 @@ pub fn run(args: &OptimiseArgs) -> CliResult<()> {
     }
     let strips = solver.strips(width, tolerance).map_err(|e| CliError::internal(format!("strips: {e}")))?;
     let optimised = solver.net();
-    out.write("net.obj", net_obj("lamella optimise: the optimised net", optimised.positions(), &optimised.quads(), optimised.rows(), optimised.columns()))?;
+    out.write("net.obj", net_obj("lamella optimise: the optimised net", optimised.positions(), &optimised.quads(), &[("rows", optimised.rows()), ("columns", optimised.columns())]))?;
     for (k, pattern) in strips.iter().enumerate() {
         out.write(&format!("strips_{k}.obj"), strips_obj(pattern))?;
     }

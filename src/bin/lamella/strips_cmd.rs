@@ -52,7 +52,12 @@ pub fn mean_gradient_norm(mesh: &TriMesh, field: &[f64]) -> f64 {
 /// `tolerance` degrees.
 pub fn build_strips(mesh: &TriMesh, field: &[f64], theta: f64, count: usize, width: Option<f64>, tolerance: f64) -> CliResult<StripRun> {
     let levels = uniform_levels(mesh, field, count).map_err(|e| CliError::bad_input(format!("level curves: {e}")))?;
-    let step = match levels.as_slice() {
+    build_strips_at(mesh, field, theta, &levels, width, tolerance)
+}
+
+/// As [`build_strips`] on the given increasing `levels` of `field`.
+pub fn build_strips_at(mesh: &TriMesh, field: &[f64], theta: f64, levels: &[f64], width: Option<f64>, tolerance: f64) -> CliResult<StripRun> {
+    let step = match levels {
         [a, b, ..] => b - a,
         // A single level: its distance to the field's minimum.
         [a] => a - field.iter().copied().fold(f64::INFINITY, f64::min),
@@ -65,7 +70,7 @@ pub fn build_strips(mesh: &TriMesh, field: &[f64], theta: f64, count: usize, wid
         None if spacing.is_finite() && spacing > 0.0 => WIDTH_PER_SPACING * spacing,
         None => return Err(CliError::bad_input("the field is constant: no level curves, give --width")),
     };
-    let curves = extract_level_curves(mesh, field, &levels).map_err(|e| CliError::bad_input(format!("level curves: {e}")))?;
+    let curves = extract_level_curves(mesh, field, levels).map_err(|e| CliError::bad_input(format!("level curves: {e}")))?;
     let curves = resample_all(&curves, mesh.mean_edge_length()).map_err(|e| CliError::internal(format!("resampling level curves: {e}")))?;
     let params = StripParams { tolerance_degrees: tolerance, ..StripParams::new(theta, width) };
     let pattern = rectifying_strips(mesh, &curves, &params).map_err(|e| CliError::bad_input(format!("strips: {e}")))?;
