@@ -8,7 +8,8 @@
 //! version-1 rulings (Fig. 19); then, in turn, each family's strips refitted to the other family's rulings at their nodes
 //! ([`crate::strips::fitted_rulings`]), a few rounds. A node's torsion is the angle between the two
 //! strips' rulings there: 0 everywhere exactly when the strips share every node's ruling, what
-//! Eq. 21 asks of the optimised net.
+//! Eq. 21 asks of the optimised net. In a web, the nodes are those of its rows and columns; the
+//! diagonals' strips are fitted to their own version-1 rulings.
 
 use super::net_mesh::NetMesh;
 use crate::mesh::Vec3;
@@ -40,7 +41,7 @@ pub struct NodeRuling {
 }
 
 /// Each family's strip rulings, per polyline (`None` where no member of the family fits).
-pub type PolylineRulings = [Vec<Option<Vec<Vec3>>>; 2];
+pub type PolylineRulings = Vec<Vec<Option<Vec<Vec3>>>>;
 
 /// Rounds of refitting each family to the other's rulings.
 const ROUNDS: usize = 3;
@@ -53,7 +54,7 @@ fn polyline_points(net: &NetMesh, k: usize) -> Vec<Vec<Vec3>> {
 /// Each family's rulings at the vertices they pass through.
 fn rulings_at(net: &NetMesh, rulings: &PolylineRulings) -> Vec<[Option<Vec3>; 2]> {
     let mut at: Vec<[Option<Vec3>; 2]> = vec![[None; 2]; net.vertex_count()];
-    for (k, family) in rulings.iter().enumerate() {
+    for (k, family) in rulings.iter().enumerate().take(2) {
         for (line, lines) in net.polylines(k).iter().zip(family) {
             let Some(lines) = lines else { continue };
             for (&v, d) in line.iter().zip(lines) {
@@ -89,18 +90,21 @@ fn common_rulings(net: &NetMesh) -> Vec<Option<Vec3>> {
 
 /// The strip of every polyline, chosen as the module describes.
 pub fn polyline_rulings(net: &NetMesh) -> PolylineRulings {
-    let points = [0, 1].map(|k| polyline_points(net, k));
+    let points: Vec<Vec<Vec<Vec3>>> = (0..net.family_count()).map(|k| polyline_points(net, k)).collect();
     let common = common_rulings(net);
-    let mut rulings: PolylineRulings = [0, 1].map(|k| {
-        net.polylines(k)
-            .par_iter()
-            .zip(&points[k])
-            .map(|(line, p)| {
-                let targets: Vec<Option<Vec3>> = line.iter().zip(version_one_rulings(p, &[])).map(|(&v, own)| common[v as usize].or(own)).collect();
-                fitted_rulings(p, &targets)
-            })
-            .collect()
-    });
+    let mut rulings: PolylineRulings = (0..net.family_count())
+        .map(|k| {
+            net.polylines(k)
+                .par_iter()
+                .zip(&points[k])
+                .map(|(line, p)| {
+                    let shared = |v: u32| if k < 2 { common[v as usize] } else { None };
+                    let targets: Vec<Option<Vec3>> = line.iter().zip(version_one_rulings(p, &[])).map(|(&v, own)| shared(v).or(own)).collect();
+                    fitted_rulings(p, &targets)
+                })
+                .collect()
+        })
+        .collect();
     for _ in 0..ROUNDS {
         for k in 0..2 {
             let at = rulings_at(net, &rulings);

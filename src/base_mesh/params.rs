@@ -34,13 +34,14 @@ impl Default for BaseMeshWeights {
 /// Parameters of a base-mesh optimisation.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct BaseMeshParams {
-    /// The family of the rows and of the columns (taken by name, [`Family::by_name`]):
-    /// pseudo-geodesic, geodesic, asymptotic, or of constant slope against an axis with a fixed
-    /// slope (Sec. 5.2.3: two such families about one axis make a net whose node axes are all
-    /// parallel to it, torsion-free).
-    pub families: [Family; 2],
+    /// The family of the rows and of the columns, and of a web's diagonals (taken by name,
+    /// [`Family::by_name`]): pseudo-geodesic, geodesic, asymptotic, or of constant slope against
+    /// an axis with a fixed slope (Sec. 5.2.3: two such families about one axis make a net whose
+    /// node axes are all parallel to it, torsion-free). Two for a net, three for a web.
+    pub families: Vec<Family>,
     /// Ask for torsion-free nodes (Eq. 21): a common ruling at every node, in the rectifying
-    /// plane of both polylines, and developable strips between consecutive rulings.
+    /// plane of both polylines, and developable strips between consecutive rulings (nets of two
+    /// families only).
     pub torsion_free: bool,
     /// With torsion-free nodes: optimise the families alone until they settle, then add the
     /// rows of Eq. 21 (default, `true`); `false` puts them on from the first iteration.
@@ -59,7 +60,7 @@ impl BaseMeshParams {
     /// Defaults for the rows' family `rows` and the columns' family `columns`.
     pub fn new(rows: Family, columns: Family) -> BaseMeshParams {
         BaseMeshParams {
-            families: [rows.by_name(), columns.by_name()],
+            families: vec![rows.by_name(), columns.by_name()],
             torsion_free: false,
             families_first: true,
             weights: BaseMeshWeights::default(),
@@ -69,9 +70,21 @@ impl BaseMeshParams {
         }
     }
 
+    /// Defaults for a 3-web (Table 1's AAG, AGG, PPG, …): the families of its rows, columns and
+    /// diagonals.
+    pub fn web(rows: Family, columns: Family, diagonals: Family) -> BaseMeshParams {
+        BaseMeshParams { families: vec![rows.by_name(), columns.by_name(), diagonals.by_name()], ..BaseMeshParams::new(rows, columns) }
+    }
+
     /// Checks every parameter, naming the first one out of range.
     pub fn validate(&self) -> Result<(), BaseMeshError> {
         let invalid = |name: &'static str, message: String| Err(BaseMeshError::InvalidParameter { name, message });
+        if !(2..=3).contains(&self.families.len()) {
+            return invalid("families", format!("a net has two families and a web three, got {}", self.families.len()));
+        }
+        if self.torsion_free && self.families.len() == 3 {
+            return invalid("torsion_free", "torsion-free nodes (Eq. 21) are held for nets of two families only, not for a web".into());
+        }
         for family in &self.families {
             match family.by_name() {
                 Family::PseudoGeodesic { theta_degrees } if !(theta_degrees.is_finite() && theta_degrees > 0.0 && theta_degrees < 180.0) => {

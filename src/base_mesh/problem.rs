@@ -3,8 +3,9 @@
 //!
 //! Variables: the vertex positions `v` (global, `3v + c`); with torsion-free nodes, a ruling
 //! `d` per vertex (global, after the positions). Per vertex a local group (eliminated by Schur
-//! complement): its normal `n`, then for each family whose polyline passes through the vertex
-//! (both neighbours present) its binormal `b` (P and G) and side vector `u` (P). With
+//! complement): its normal `n`, then for each family (rows, columns, a web's diagonals) whose
+//! polyline passes through the vertex (both neighbours present) its binormal `b` (P and G) and
+//! side vector `u` (P). Torsion-free nodes are held in nets of two families only. With
 //! torsion-free nodes, per segment a local group: its discrete principal normal `n_{0,i}`.
 //!
 //! One block per vertex, with the neighbours `v_back`, `v_front` along each family (Fig. 21):
@@ -99,7 +100,7 @@ struct VertexBlock {
     /// First variable of the local group (`n`, then per family `b`, `u`).
     local_start: usize,
     /// Offset of family `k`'s `b` in the local group, if it has one here.
-    binormal: [Option<usize>; 2],
+    binormal: [Option<usize>; 3],
     rows: usize,
     variables: Vec<u32>,
 }
@@ -107,7 +108,8 @@ struct VertexBlock {
 /// The problem.
 pub(crate) struct BaseMeshProblem {
     net: NetMesh,
-    pub curves: [CurveRows; 2],
+    /// Each family's rows (two for a net, three for a web).
+    pub curves: Vec<CurveRows>,
     pub torsion_free: bool,
     pub weights: BaseMeshWeights,
     /// `v_start` of the pull rows.
@@ -131,7 +133,7 @@ const MIN_BISECTOR: f64 = 0.05;
 
 impl BaseMeshProblem {
     /// The problem on `net` (scaled to mean segment 1), its start positions being the pull target.
-    pub fn new(net: NetMesh, curves: [CurveRows; 2], torsion_free: bool, weights: BaseMeshWeights, anchors: Vec<Anchor>) -> BaseMeshProblem {
+    pub fn new(net: NetMesh, curves: Vec<CurveRows>, torsion_free: bool, weights: BaseMeshWeights, anchors: Vec<Anchor>) -> BaseMeshProblem {
         let n = net.vertex_count();
         let global = if torsion_free { 6 * n } else { 3 * n };
         let mut group_sizes = Vec::with_capacity(n);
@@ -139,7 +141,7 @@ impl BaseMeshProblem {
         let mut vertices = Vec::with_capacity(n);
         for v in 0..n {
             let mut stencil = vec![v as u32];
-            for k in 0..2 {
+            for k in 0..curves.len() {
                 let along = net.along(v, k);
                 for w in [along.back, along.front].into_iter().flatten() {
                     if !stencil.contains(&w) {
@@ -148,11 +150,11 @@ impl BaseMeshProblem {
                 }
             }
             let mut size = 3;
-            let mut binormal = [None; 2];
+            let mut binormal = [None; 3];
             let mut rows = 0;
-            let tangents = (0..2).filter(|&k| net.along(v, k).inner().is_some()).count();
+            let tangents = (0..curves.len()).filter(|&k| net.along(v, k).inner().is_some()).count();
             rows += tangents + 1 + if tangents < 2 { 3 } else { 0 };
-            for k in 0..2 {
+            for k in 0..curves.len() {
                 if net.along(v, k).inner().is_some() {
                     if curves[k].auxiliaries() > 0 {
                         binormal[k] = Some(size);
@@ -161,7 +163,7 @@ impl BaseMeshProblem {
                     rows += curves[k].rows() + 3;
                 }
             }
-            for k in (0..2).filter(|&k| matches!(curves[k], CurveRows::Slope { .. })) {
+            for k in (0..curves.len()).filter(|&k| matches!(curves[k], CurveRows::Slope { .. })) {
                 rows += usize::from(net.along(v, k).front.is_some()) + usize::from(net.along(v, k).inner().is_some());
             }
             rows += 7;
@@ -243,7 +245,7 @@ impl BaseMeshProblem {
 
         // Normal rows.
         let mut tangents = 0;
-        for k in 0..2 {
+        for k in 0..self.curves.len() {
             let Some((back, front)) = self.net.along(v, k).inner() else { continue };
             tangents += 1;
             let chord = Chord::new(p(front) - p(back));
@@ -267,7 +269,7 @@ impl BaseMeshProblem {
 
         // Family rows and fairness.
         let fair = w.fair.sqrt();
-        for k in 0..2 {
+        for k in 0..self.curves.len() {
             let Some((back, front)) = self.net.along(v, k).inner() else { continue };
             let to_front = Chord::new(p(front) - p(vv));
             let to_back = Chord::new(p(back) - p(vv));
@@ -346,7 +348,7 @@ impl BaseMeshProblem {
         }
 
         // Constant slope: the segment to the front neighbour, and the axis in the rectifying plane.
-        for k in 0..2 {
+        for k in 0..self.curves.len() {
             let CurveRows::Slope { axis, sin } = self.curves[k] else { continue };
             let along = self.net.along(v, k);
             if let Some(front) = along.front {
@@ -556,6 +558,7 @@ mod tests {
 
     /// A 4 × 5 patch of a wavy surface with every kind of row, randomised auxiliaries.
     fn problem(curves: [CurveRows; 2], torsion_free: bool) -> (BaseMeshProblem, Vec<f64>) {
+        let curves = curves.to_vec();
         let (rows, columns) = (4usize, 5usize);
         let positions: Vec<Vec3> = (0..rows)
             .flat_map(|i| (0..columns).map(move |j| Vec3::new(j as f64 + 0.1 * i as f64, i as f64, 0.3 * (j as f64 * 0.7).sin() + 0.2 * (i as f64).cos())))

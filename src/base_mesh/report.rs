@@ -39,9 +39,9 @@ pub struct BaseMeshReport {
     pub energy: f64,
     /// Each family's target angle along its polylines' direction (a pseudo-geodesic family whose
     /// polylines run the other way is held at `180° − θ`, the same curves).
-    pub targets_degrees: [f64; 2],
+    pub targets_degrees: Vec<f64>,
     /// Each family measured at its polylines' inner vertices.
-    pub families: [FamilyAngles; 2],
+    pub families: Vec<FamilyAngles>,
     pub deviation: Deviation,
     pub node_torsion: NodeTorsion,
     /// Every measured vertex of both families is within the tolerance of its angle, and a
@@ -53,7 +53,7 @@ pub struct BaseMeshReport {
 
 /// The measures of a net (caller units) against its reference.
 pub(crate) struct Measures {
-    pub families: [FamilyAngles; 2],
+    pub families: Vec<FamilyAngles>,
     pub deviation: Deviation,
     pub rulings: PolylineRulings,
     pub nodes: Vec<NodeRuling>,
@@ -95,7 +95,7 @@ impl Reference {
     }
 
     /// Each family of `net` measured at `targets_degrees` (in parallel, deterministic).
-    pub fn family_angles(&self, net: &NetMesh, families: [Family; 2], targets_degrees: [f64; 2]) -> [FamilyAngles; 2] {
+    pub fn family_angles(&self, net: &NetMesh, families: &[Family], targets_degrees: &[f64]) -> Vec<FamilyAngles> {
         let normals: Vec<Vec3> = net.positions().par_iter().map(|p| self.closest(p).1).collect();
         self.families_with(net, families, targets_degrees, &normals)
     }
@@ -103,15 +103,17 @@ impl Reference {
     /// Each family of `net` measured at `targets_degrees` with the reference's `normals` at its
     /// vertices: pseudo-geodesics, geodesics and asymptotic curves by their binormals
     /// ([`polyline_family_angles`]), constant slopes by their segments ([`slope_angles`]).
-    fn families_with(&self, net: &NetMesh, families: [Family; 2], targets_degrees: [f64; 2], normals: &[Vec3]) -> [FamilyAngles; 2] {
-        [0, 1].map(|k| match target_family(families[k], targets_degrees[k]) {
-            slope @ Family::ConstantSlope { slope_degrees, .. } => slope_angles(net, k, &slope.slope_axis().unwrap_or_else(Vec3::z), slope_degrees),
-            family => polyline_family_angles(&Self::curves(net, k, normals), family, self.diagonal),
-        })
+    fn families_with(&self, net: &NetMesh, families: &[Family], targets_degrees: &[f64], normals: &[Vec3]) -> Vec<FamilyAngles> {
+        (0..families.len())
+            .map(|k| match target_family(families[k], targets_degrees[k]) {
+                slope @ Family::ConstantSlope { slope_degrees, .. } => slope_angles(net, k, &slope.slope_axis().unwrap_or_else(Vec3::z), slope_degrees),
+                family => polyline_family_angles(&Self::curves(net, k, normals), family, self.diagonal),
+            })
+            .collect()
     }
 
     /// Measures `net` for the families `families` at the targets `targets_degrees`.
-    pub fn measure(&self, net: &NetMesh, families: [Family; 2], targets_degrees: [f64; 2]) -> Measures {
+    pub fn measure(&self, net: &NetMesh, families: &[Family], targets_degrees: &[f64]) -> Measures {
         let closest: Vec<(Vec3, Vec3, f64)> = net.positions().par_iter().map(|p| self.closest(p)).collect();
         let normals: Vec<Vec3> = closest.iter().map(|c| c.1).collect();
         let family_angles = self.families_with(net, families, targets_degrees, &normals);
@@ -178,10 +180,10 @@ fn slope_angles(net: &NetMesh, k: usize, axis: &Vec3, slope_degrees: f64) -> Fam
 
 impl BaseMeshReport {
     /// The report of `measures` with the solver's counters, judged at `tolerance_degrees`.
-    pub(crate) fn new(measures: &Measures, targets_degrees: [f64; 2], tolerance_degrees: f64) -> BaseMeshReport {
+    pub(crate) fn new(measures: &Measures, targets_degrees: &[f64], tolerance_degrees: f64) -> BaseMeshReport {
         let families_met = measures.families.iter().all(|f| f.max_error_degrees <= tolerance_degrees && f.straight == 0);
         BaseMeshReport {
-            targets_degrees,
+            targets_degrees: targets_degrees.to_vec(),
             families: measures.families.clone(),
             deviation: measures.deviation,
             node_torsion: measures.node_torsion.clone(),

@@ -20,7 +20,7 @@ use serde::{Deserialize, Serialize};
 /// First bytes of every saved base-mesh session.
 pub const BASE_MESH_SESSION_MAGIC: [u8; 4] = *b"LMLB";
 /// Version of the base-mesh session layout written by this library.
-pub const BASE_MESH_SESSION_VERSION: u32 = 1;
+pub const BASE_MESH_SESSION_VERSION: u32 = 2;
 
 #[derive(Serialize, Deserialize)]
 struct Session {
@@ -29,11 +29,13 @@ struct Session {
     positions: Vec<[f64; 3]>,
     rows: Vec<Vec<u32>>,
     columns: Vec<Vec<u32>>,
+    /// A web's diagonals (none in a net).
+    diagonals: Vec<Vec<u32>>,
     /// The reference surface as given.
     reference: TriMesh,
     params: BaseMeshParams,
     /// Each family's target along its polylines' direction.
-    targets_degrees: [f64; 2],
+    targets_degrees: Vec<f64>,
     /// The torsion-free rows of Eq. 21 are on.
     torsion_free: bool,
     /// The scaled net the stage started from (the pull target `v_start`): the net as given, or
@@ -99,9 +101,10 @@ impl BaseMeshSolver {
             positions: xyz(self.given.positions()),
             rows: self.given.rows().to_vec(),
             columns: self.given.columns().to_vec(),
+            diagonals: self.given.diagonals().to_vec(),
             reference: self.reference.mesh.clone(),
             params: self.params.clone(),
-            targets_degrees: self.targets_degrees,
+            targets_degrees: self.targets_degrees.clone(),
             torsion_free: self.problem.torsion_free,
             start: xyz(self.problem.net().positions()),
             x: self.x.clone(),
@@ -130,15 +133,19 @@ impl BaseMeshSolver {
         let params = session.params;
         params.validate().map_err(|e| corrupt(format!("saved parameters: {e}")))?;
         validate_lm(&params.lm).map_err(|e| corrupt(format!("saved parameters: {e}")))?;
-        if let Some(k) = (0..2).find(|&k| params.families[k] != params.families[k].by_name()) {
+        if let Some(k) = (0..params.families.len()).find(|&k| params.families[k] != params.families[k].by_name()) {
             return Err(corrupt(format!("saved family {k} ({:?}) is not taken by name", params.families[k])));
         }
-        let given = NetMesh::new(session.positions.into_iter().map(Vec3::from).collect(), session.rows, session.columns)
+        let positions: Vec<Vec3> = session.positions.into_iter().map(Vec3::from).collect();
+        let given = if session.diagonals.is_empty() { NetMesh::new(positions, session.rows, session.columns) } else { NetMesh::web(positions, session.rows, session.columns, session.diagonals) }
             .map_err(|e| corrupt(format!("the saved net is not valid: {e}")))?;
         if !has_inner_vertex(&given) {
             return Err(corrupt("the saved net has no vertex inside a row or a column of three or more"));
         }
         let targets_degrees = session.targets_degrees;
+        if targets_degrees.len() != params.families.len() || given.family_count() != params.families.len() {
+            return Err(corrupt(format!("{} saved targets and a net of {} families for {} families", targets_degrees.len(), given.family_count(), params.families.len())));
+        }
         for (k, (&target, &family)) in targets_degrees.iter().zip(&params.families).enumerate() {
             if target != family.theta_degrees() && target != mirror_degrees(family) {
                 return Err(corrupt(format!("saved target {target}° of family {k} is neither its angle nor that angle read backwards")));
@@ -165,7 +172,7 @@ impl BaseMeshSolver {
         let reference = Reference::new(&session.reference);
         let start = given.with_positions(session.start.into_iter().map(Vec3::from).collect());
         let mut held = session.held.clone();
-        let (problem, mut lm) = assemble(&reference, start, scale, &params, targets_degrees, torsion_free, &mut held)
+        let (problem, mut lm) = assemble(&reference, start, scale, &params, &targets_degrees, torsion_free, &mut held)
             .map_err(|e| corrupt(format!("the saved net does not make a problem: {e}")))?;
         if let Some(v) = (0..n).find(|&v| held[v] != session.held[v]) {
             return Err(corrupt(format!("vertex {v} lay past the reference's boundary where the stage started, but is not held")));
@@ -180,7 +187,7 @@ impl BaseMeshSolver {
         if let Some(v) = net.positions().iter().position(|p| !p.iter().all(|c| c.is_finite())) {
             return Err(corrupt(format!("vertex {v} is not finite in the net's units")));
         }
-        let measures = reference.measure(&net, params.families, targets_degrees);
+        let measures = reference.measure(&net, &params.families, &targets_degrees);
         lm.restore_damping(session.damping);
         Ok(BaseMeshSolver {
             given,

@@ -32,7 +32,7 @@ pub struct BaseMeshSolver {
     pub(super) lm: LevenbergMarquardt,
     pub(super) params: BaseMeshParams,
     pub(super) x: Vec<f64>,
-    pub(super) targets_degrees: [f64; 2],
+    pub(super) targets_degrees: Vec<f64>,
     pub(super) iterations: usize,
     pub(super) converged: bool,
     pub(super) initial: BaseMeshReport,
@@ -44,29 +44,36 @@ pub struct BaseMeshSolver {
 }
 
 impl BaseMeshSolver {
-    /// Prepares the optimisation of `net` toward `params.families` (rows, columns) near
+    /// Prepares the optimisation of `net` toward `params.families` (rows, columns, and a web's
+    /// diagonals) near
     /// `reference`. Each pseudo-geodesic family is held at `θ` or `180° − θ`, whichever its
     /// polylines are nearer to as given (see [`BaseMeshReport::targets_degrees`]).
     ///
-    /// Errors: `InvalidParameter` naming the parameter; `NothingToOptimise` when no vertex is
+    /// Errors: `InvalidParameter` naming the parameter (also when the net's family count is not
+    /// the parameters'); `NothingToOptimise` when no vertex is
     /// inside a polyline of three or more vertices; `Solver` if the problem cannot be set up.
     pub fn new(net: &NetMesh, reference: &TriMesh, mut params: BaseMeshParams) -> Result<BaseMeshSolver, BaseMeshError> {
         params.validate()?;
-        params.families = params.families.map(Family::by_name);
+        params.families.iter_mut().for_each(|f| *f = f.by_name());
+        if net.family_count() != params.families.len() {
+            let message = format!("{} families for a net of {} (rows, columns{})", params.families.len(), net.family_count(), if net.family_count() == 3 { ", diagonals" } else { "" });
+            return Err(BaseMeshError::InvalidParameter { name: "families", message });
+        }
         if !has_inner_vertex(net) {
             return Err(BaseMeshError::NothingToOptimise);
         }
         let reference = Reference::new(reference);
         let scale = unit_scale(net);
-        let as_given = reference.family_angles(net, params.families, params.families.map(|f| f.theta_degrees()));
-        let mirrored = reference.family_angles(net, params.families, params.families.map(mirror_degrees));
-        let targets_degrees = [0, 1].map(|k| oriented_target(params.families[k], &as_given[k], &mirrored[k]));
+        let given: Vec<f64> = params.families.iter().map(|f| f.theta_degrees()).collect();
+        let as_given = reference.family_angles(net, &params.families, &given);
+        let mirrored = reference.family_angles(net, &params.families, &params.families.iter().copied().map(mirror_degrees).collect::<Vec<_>>());
+        let targets_degrees: Vec<f64> = (0..params.families.len()).map(|k| oriented_target(params.families[k], &as_given[k], &mirrored[k])).collect();
         let scaled = net.with_positions(net.positions().iter().map(|p| p * scale).collect());
-        let measures = reference.measure(net, params.families, targets_degrees);
+        let measures = reference.measure(net, &params.families, &targets_degrees);
         let mut held = vec![false; net.vertex_count()];
         let torsion_free = params.torsion_free && !params.families_first;
-        let (problem, lm, x) = stage(&reference, scaled, scale, &params, targets_degrees, torsion_free, &measures, &mut held)?;
-        let mut report = BaseMeshReport::new(&measures, targets_degrees, params.tolerance_degrees);
+        let (problem, lm, x) = stage(&reference, scaled, scale, &params, &targets_degrees, torsion_free, &measures, &mut held)?;
+        let mut report = BaseMeshReport::new(&measures, &targets_degrees, params.tolerance_degrees);
         report.energy = energy(&problem, &x);
         Ok(BaseMeshSolver {
             given: net.clone(),
@@ -107,15 +114,15 @@ impl BaseMeshSolver {
             let settled = outcome.converged.is_some() || !outcome.accepted || decrease <= self.params.relative_tolerance * outcome.energy_before;
             if settled && self.params.torsion_free && !self.problem.torsion_free {
                 // The families are met: now the nodes, from the strips of the net as it stands.
-                self.measures = self.reference.measure(&self.net(), self.params.families, self.targets_degrees);
-                let (problem, lm, x) = stage(&self.reference, self.scaled_net(), self.scale, &self.params, self.targets_degrees, true, &self.measures, &mut self.held)?;
+                self.measures = self.reference.measure(&self.net(), &self.params.families, &self.targets_degrees);
+                let (problem, lm, x) = stage(&self.reference, self.scaled_net(), self.scale, &self.params, &self.targets_degrees, true, &self.measures, &mut self.held)?;
                 (self.problem, self.lm, self.x) = (problem, lm, x);
             } else {
                 self.converged = settled;
             }
         }
-        self.measures = self.reference.measure(&self.net(), self.params.families, self.targets_degrees);
-        let mut report = BaseMeshReport::new(&self.measures, self.targets_degrees, self.params.tolerance_degrees);
+        self.measures = self.reference.measure(&self.net(), &self.params.families, &self.targets_degrees);
+        let mut report = BaseMeshReport::new(&self.measures, &self.targets_degrees, self.params.tolerance_degrees);
         report.iterations = self.iterations;
         report.step_iterations = ran;
         report.converged = self.converged;
@@ -162,15 +169,16 @@ impl BaseMeshSolver {
     /// the reference at each family's target angle with `tolerance_degrees` (a constant-slope
     /// family's strips each at their own mean angle).
     /// Errors: `InvalidParameter` for a width or tolerance that is not finite and positive.
-    pub fn strips(&self, width: f64, tolerance_degrees: f64) -> Result<[StripPattern; 2], BaseMeshError> {
-        self.with_strips(width, tolerance_degrees, |family| [0, 1].map(|k| family.build(k, &self.measures.rulings[k], self.strip_theta(k))))
+    pub fn strips(&self, width: f64, tolerance_degrees: f64) -> Result<Vec<StripPattern>, BaseMeshError> {
+        self.with_strips(width, tolerance_degrees, |family| (0..self.params.families.len()).map(|k| family.build(k, &self.measures.rulings[k], self.strip_theta(k))).collect())
     }
 
-    /// Family `k`'s strips (0: rows, 1: columns) as [`Self::strips`] builds them.
-    /// Errors: `InvalidParameter` for `k` above 1, or as [`Self::strips`].
+    /// Family `k`'s strips (0: rows, 1: columns, 2: a web's diagonals) as [`Self::strips`]
+    /// builds them. Errors: `InvalidParameter` for `k` past the last family, or as [`Self::strips`].
     pub fn family_strips(&self, k: usize, width: f64, tolerance_degrees: f64) -> Result<StripPattern, BaseMeshError> {
-        if k > 1 {
-            return Err(BaseMeshError::InvalidParameter { name: "k", message: format!("a net has families 0 and 1, got {k}") });
+        let count = self.params.families.len();
+        if k >= count {
+            return Err(BaseMeshError::InvalidParameter { name: "k", message: format!("this net has families 0 to {}, got {k}", count - 1) });
         }
         self.with_strips(width, tolerance_degrees, |family| family.build(k, &self.measures.rulings[k], self.strip_theta(k)))
     }
@@ -201,8 +209,8 @@ impl BaseMeshSolver {
     }
 
     /// Each family's target along its polylines' direction (see [`BaseMeshReport::targets_degrees`]).
-    pub fn targets_degrees(&self) -> [f64; 2] {
-        self.targets_degrees
+    pub fn targets_degrees(&self) -> &[f64] {
+        &self.targets_degrees
     }
 
     pub fn iterations(&self) -> usize {
@@ -226,13 +234,13 @@ const MIN_OFFSET: f64 = 1e-6;
 
 /// Whether some vertex of `net` lies inside a polyline: has a curve to hold to its family.
 pub(super) fn has_inner_vertex(net: &NetMesh) -> bool {
-    (0..net.vertex_count()).any(|v| net.along(v, 0).inner().is_some() || net.along(v, 1).inner().is_some())
+    (0..net.vertex_count()).any(|v| (0..net.family_count()).any(|k| net.along(v, k).inner().is_some()))
 }
 
 /// Internal lengths per caller length: the inverse of the mean segment length of `net` (1 for a
 /// degenerate mean).
 pub(super) fn unit_scale(net: &NetMesh) -> f64 {
-    let segments: Vec<f64> = (0..2).flat_map(|k| net.segments(k).map(|[a, b]| (net.positions()[b as usize] - net.positions()[a as usize]).norm()).collect::<Vec<_>>()).collect();
+    let segments: Vec<f64> = (0..net.family_count()).flat_map(|k| net.segments(k).map(|[a, b]| (net.positions()[b as usize] - net.positions()[a as usize]).norm()).collect::<Vec<_>>()).collect();
     let mean = segments.iter().sum::<f64>() / segments.len().max(1) as f64;
     if mean > 0.0 && mean.is_finite() {
         1.0 / mean
@@ -248,7 +256,7 @@ fn stage(
     net: NetMesh,
     scale: f64,
     params: &BaseMeshParams,
-    targets_degrees: [f64; 2],
+    targets_degrees: &[f64],
     torsion_free: bool,
     measures: &Measures,
     held: &mut [bool],
@@ -269,11 +277,11 @@ pub(super) fn assemble(
     net: NetMesh,
     scale: f64,
     params: &BaseMeshParams,
-    targets_degrees: [f64; 2],
+    targets_degrees: &[f64],
     torsion_free: bool,
     held: &mut [bool],
 ) -> Result<(BaseMeshProblem, LevenbergMarquardt), BaseMeshError> {
-    let curves = [0, 1].map(|k| CurveRows::new(params.families[k], targets_degrees[k]));
+    let curves: Vec<CurveRows> = (0..params.families.len()).map(|k| CurveRows::new(params.families[k], targets_degrees[k])).collect();
     let anchors = anchors(reference, net.positions().par_iter().copied(), scale, held);
     let problem = BaseMeshProblem::new(net, curves, torsion_free, params.weights, anchors);
     let lm = LevenbergMarquardt::new(&problem, params.lm.clone())?;

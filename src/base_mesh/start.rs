@@ -55,7 +55,7 @@ pub(crate) fn initialise_auxiliaries(problem: &BaseMeshProblem, anchors: &[Ancho
         };
         let normal = if normal.dot(&reference) < 0.0 { -normal } else { normal };
         set(x, problem.normal(v), normal);
-        for k in 0..2 {
+        for k in 0..problem.curves.len() {
             let (Some(start), Some((back, front))) = (problem.binormal(v, k), net.along(v, k).inner()) else { continue };
             let here = p(x, v as u32);
             let t = unit_or(p(x, front) - p(x, back), Vec3::x());

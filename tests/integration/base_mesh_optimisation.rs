@@ -161,7 +161,7 @@ pub(crate) fn polyline_angles(net: &NetMesh, k: usize, normal: impl Fn(&Vec3) ->
 
 /// From the strips themselves: the largest |det(d_j, d_{j+1}, ê_j)| of a quad (Eq. 17) and the
 /// largest angle between the two families' rulings at a vertex both strips pass through.
-fn strips_planarity_and_shared_rulings(net: &NetMesh, strips: &[StripPattern; 2]) -> (f64, f64) {
+fn strips_planarity_and_shared_rulings(net: &NetMesh, strips: &[StripPattern]) -> (f64, f64) {
     let mut planarity: f64 = 0.0;
     let mut at: BTreeMap<u32, [Option<Vec3>; 2]> = BTreeMap::new();
     for (k, pattern) in strips.iter().enumerate() {

@@ -90,4 +90,5 @@ mod tracing_seeding;
 
 mod view_page;
 mod base_mesh_optimisation;
+mod base_mesh_webs;
 mod base_mesh_session;

@@ -446,14 +446,14 @@ pub struct NetArgs {
 #[derive(Args, Debug, Clone)]
 pub struct OptimiseArgs {
     /// The net: vertices, and its rows and columns as `l` polylines after `o rows` and
-    /// `o columns` (the net.obj of `lamella net`).
+    /// `o columns`, a web's third family after `o diagonals` (the net.obj of `lamella net`).
     #[arg(long, value_name = "net.obj", required_unless_present = "resume")]
     pub net: Option<PathBuf>,
-    /// The family of the rows and of the columns, comma-separated: P<θ> (pseudo-geodesics of
-    /// angle θ in degrees), G (geodesics), A (asymptotic curves) or S<β> (constant slope β in
-    /// degrees against the planes orthogonal to --axis; two of them make every node axis parallel
-    /// to it, Sec. 5.2.2), e.g. P60,P60 or S20,S20.
-    #[arg(long, value_name = "F,G", required_unless_present = "resume")]
+    /// The family of the rows and of the columns (and of a web's diagonals), comma-separated:
+    /// P<θ> (pseudo-geodesics of angle θ in degrees), G (geodesics), A (asymptotic curves) or
+    /// S<β> (constant slope β in degrees against the planes orthogonal to --axis; two of them make
+    /// every node axis parallel to it, Sec. 5.2.2), e.g. P60,P60, S20,S20 or A,A,G.
+    #[arg(long, value_name = "F,G[,H]", required_unless_present = "resume")]
     pub types: Option<String>,
     /// The axis of S<β> families (three numbers, any length but not zero) [default: 0,0,1].
     #[arg(long, value_name = "X,Y,Z")]

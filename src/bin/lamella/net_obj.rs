@@ -1,8 +1,8 @@
 //! net.obj: a net of rows and columns (paper Sec. 3.5) as OBJ: its vertices, its quads as faces,
 //! then the rows after `o rows` and the columns after `o columns`, each an `l` polyline (a 3-web:
 //! triangles or a Kagome pattern's triangles and hexagons, and its third family after
-//! `o diagonals`). `net` writes it from the crossings of its level sets; `optimise` reads a net's
-//! and writes the result.
+//! `o diagonals`). `net` writes it from the crossings of its level sets; `optimise` reads it and
+//! writes the result.
 use crate::error::{CliError, CliResult};
 use crate::mesh_input::read_text;
 use lamella::base_mesh::NetMesh;
@@ -37,7 +37,7 @@ pub fn read_net_obj(path: &Path) -> CliResult<NetMesh> {
     let text = read_text(path)?;
     let bad = |line: usize, what: &str| CliError::bad_input(format!("{}: line {line}: {what}", path.display()));
     let mut positions: Vec<Vec3> = Vec::new();
-    let mut families: [Vec<Vec<u32>>; 2] = [Vec::new(), Vec::new()];
+    let mut families: [Vec<Vec<u32>>; 3] = Default::default();
     let mut family: Option<usize> = None;
     for (i, raw) in text.lines().enumerate() {
         let line = i + 1;
@@ -54,12 +54,12 @@ pub fn read_net_obj(path: &Path) -> CliResult<NetMesh> {
                 family = match tokens.next() {
                     Some("rows") => Some(0),
                     Some("columns") => Some(1),
-                    Some("diagonals") => return Err(bad(line, "a 3-web (`o diagonals`): optimise takes nets of rows and columns only")),
+                    Some("diagonals") => Some(2),
                     _ => None,
                 };
             }
             Some("l") => {
-                let k = family.ok_or_else(|| bad(line, "a polyline outside `o rows` and `o columns`"))?;
+                let k = family.ok_or_else(|| bad(line, "a polyline outside `o rows`, `o columns` and `o diagonals`"))?;
                 let polyline = tokens
                     .map(|t| t.parse::<usize>().ok().and_then(|k| k.checked_sub(1)).filter(|&k| k < positions.len()).map(|k| k as u32))
                     .collect::<Option<Vec<u32>>>()
@@ -69,9 +69,10 @@ pub fn read_net_obj(path: &Path) -> CliResult<NetMesh> {
             _ => {}
         }
     }
-    if families.iter().any(Vec::is_empty) {
+    if families[..2].iter().any(Vec::is_empty) {
         return Err(CliError::bad_input(format!("{}: needs `l` polylines after both `o rows` and `o columns` (the net.obj of `lamella net`)", path.display())));
     }
-    let [rows, columns] = families;
-    NetMesh::new(positions, rows, columns).map_err(|e| CliError::bad_input(format!("{}: {e}", path.display())))
+    let [rows, columns, diagonals] = families;
+    let net = if diagonals.is_empty() { NetMesh::new(positions, rows, columns) } else { NetMesh::web(positions, rows, columns, diagonals) };
+    net.map_err(|e| CliError::bad_input(format!("{}: {e}", path.display())))
 }

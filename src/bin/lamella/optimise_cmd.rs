@@ -40,7 +40,10 @@ fn start(args: &OptimiseArgs) -> CliResult<(BaseMeshSolver, String, String)> {
     let path = args.net.as_deref().ok_or_else(|| CliError::bad_input("give --net"))?;
     let net = read_net_obj(path)?;
     let reference = load_mesh(args.reference.as_deref())?;
-    let mut params = BaseMeshParams::new(families[0], families[1]);
+    let mut params = match families[..] {
+        [rows, columns, diagonals] => BaseMeshParams::web(rows, columns, diagonals),
+        _ => BaseMeshParams::new(families[0], families[1]),
+    };
     params.torsion_free = args.torsion_free;
     params.tolerance_degrees = args.tolerance;
     let solver = BaseMeshSolver::new(&net, &reference, params).map_err(|e| CliError::bad_input(format!("optimise: {e}")))?;
@@ -64,7 +67,8 @@ pub fn run(args: &OptimiseArgs) -> CliResult<()> {
     let target: PathBuf = args.out.out.clone().unwrap_or_else(|| PathBuf::from(DEFAULT_OUT));
     let out = OutputDir::create(&target, args.out.force)?;
     let labels: Vec<String> = params.families.iter().map(family_label).collect();
-    note(verbosity, &format!("{net_name}: {} vertices, {} rows, {} columns; {} near {name}{}", given.vertex_count(), given.rows().len(), given.columns().len(), labels.join(", "), if torsion_free { ", torsion-free nodes" } else { "" }));
+    let diagonals = if given.family_count() == 3 { format!(", {} diagonals", given.diagonals().len()) } else { String::new() };
+    note(verbosity, &format!("{net_name}: {} vertices, {} rows, {} columns{diagonals}; {} near {name}{}", given.vertex_count(), given.rows().len(), given.columns().len(), labels.join(", "), if torsion_free { ", torsion-free nodes" } else { "" }));
     note(verbosity, &progress_line(solver.report()));
     while solver.iterations() < args.max_iterations && !solver.is_converged() {
         let report = solver.step(STEP.min(args.max_iterations - solver.iterations())).map_err(|e| CliError::internal(format!("optimise: {e}")))?;
@@ -74,7 +78,13 @@ pub fn run(args: &OptimiseArgs) -> CliResult<()> {
     }
     let strips = solver.strips(width, tolerance).map_err(|e| CliError::internal(format!("strips: {e}")))?;
     let optimised = solver.net();
-    out.write("net.obj", net_obj("lamella optimise: the optimised net", optimised.positions(), &optimised.quads(), &[("rows", optimised.rows()), ("columns", optimised.columns())]))?;
+    let net_text = if optimised.family_count() == 3 {
+        let families = [("rows", optimised.rows()), ("columns", optimised.columns()), ("diagonals", optimised.diagonals())];
+        net_obj("lamella optimise: the optimised web (its triangles; a Kagome pattern's hexagons are not written)", optimised.positions(), &optimised.triangles(), &families)
+    } else {
+        net_obj("lamella optimise: the optimised net", optimised.positions(), &optimised.quads(), &[("rows", optimised.rows()), ("columns", optimised.columns())])
+    };
+    out.write("net.obj", net_text)?;
     for (k, pattern) in strips.iter().enumerate() {
         out.write(&format!("strips_{k}.obj"), strips_obj(pattern))?;
     }
@@ -126,7 +136,8 @@ pub fn run(args: &OptimiseArgs) -> CliResult<()> {
     }
 }
 
-/// `--types`: two names, each as `net --families` takes them or `S<β>`, a constant slope β about
+/// `--types`: two names (a net) or three (a web: rows, columns, diagonals), each as
+/// `net --families` takes them or `S<β>`, a constant slope β about
 /// `axis` (`--axis`, default the z axis).
 fn parse_types(text: &str, axis: Option<&str>) -> CliResult<Vec<Family>> {
     let axis = match axis {
@@ -137,8 +148,8 @@ fn parse_types(text: &str, axis: Option<&str>) -> CliResult<Vec<Family>> {
         return Err(CliError::bad_input("--axis: must not be zero"));
     }
     let names: Vec<&str> = text.split(',').map(str::trim).collect();
-    if names.len() != 2 {
-        return Err(CliError::bad_input(format!("--types: a net has two families, got {} in '{}'", names.len(), lamella::input::clip(text))));
+    if !(2..=3).contains(&names.len()) {
+        return Err(CliError::bad_input(format!("--types: a net has two families and a web three, got {} in '{}'", names.len(), lamella::input::clip(text))));
     }
     names
         .into_iter()
@@ -157,7 +168,7 @@ fn parse_types(text: &str, axis: Option<&str>) -> CliResult<Vec<Family>> {
 }
 
 fn mean_segment(net: &NetMesh) -> f64 {
-    let lengths: Vec<f64> = (0..2).flat_map(|k| net.segments(k).map(|[a, b]| (net.positions()[b as usize] - net.positions()[a as usize]).norm()).collect::<Vec<_>>()).collect();
+    let lengths: Vec<f64> = (0..net.family_count()).flat_map(|k| net.segments(k).map(|[a, b]| (net.positions()[b as usize] - net.positions()[a as usize]).norm()).collect::<Vec<_>>()).collect();
     lengths.iter().sum::<f64>() / lengths.len().max(1) as f64
 }
 
@@ -174,7 +185,7 @@ fn progress_line(r: &BaseMeshReport) -> String {
 }
 
 /// Per family: the angle error before and after and its strips; then the nodes and the deviation.
-fn outcome_lines(labels: &[String], initial: &BaseMeshReport, last: &BaseMeshReport, strips: &[StripPattern; 2]) -> String {
+fn outcome_lines(labels: &[String], initial: &BaseMeshReport, last: &BaseMeshReport, strips: &[StripPattern]) -> String {
     let mut text = String::new();
     for (k, label) in labels.iter().enumerate() {
         let _ = writeln!(
@@ -202,9 +213,9 @@ fn outcome_lines(labels: &[String], initial: &BaseMeshReport, last: &BaseMeshRep
     text
 }
 
-/// nodes.csv: one row per vertex inside a row and a column, with each family's strip's Sec. 5.1
-/// diagnostics there (the node is a vertex of both strips' centre lines).
-fn nodes_csv(net: &NetMesh, nodes: &[NodeRuling], strips: &[StripPattern; 2]) -> String {
+/// nodes.csv: one row per vertex inside a row and a column, with the row's and the column's
+/// strip's Sec. 5.1 diagnostics there (the node is a vertex of both strips' centre lines).
+fn nodes_csv(net: &NetMesh, nodes: &[NodeRuling], strips: &[StripPattern]) -> String {
     let mut text = String::from("vertex,x,y,z,ruling_angle_degrees,axis_x,axis_y,axis_z");
     text.push_str(&diagnostics_header());
     text.push('\n');
