@@ -243,8 +243,9 @@ typedef struct LmlGuides LmlGuides;
 // release it with `lml_mesh_free`. Immutable once created.
 typedef struct LmlMesh LmlMesh;
 
-// A net optimisation session (opaque): a copy of the mesh, the two fields, their auxiliary
-// variables and the solver state. Create it with `lml_net_new`, release it with `lml_net_free`.
+// A net optimisation session (opaque): a copy of the mesh, the two fields (three for a 3-web),
+// their auxiliary variables and the solver state. Create it with `lml_net_new` or
+// `lml_web_new`, release it with `lml_net_free`.
 typedef struct LmlNet LmlNet;
 
 // A surface optimisation session (opaque): the original surface, the fixed field, the moving
@@ -265,6 +266,10 @@ typedef struct LmlShading LmlShading;
 // The quad net and nodes of two strip families (opaque). Create it with `lml_strip_net_new`,
 // release it with `lml_strip_net_free`.
 typedef struct LmlStripNet LmlStripNet;
+
+// The web and nodes of three strip families (opaque). Create it with `lml_strip_web_new`,
+// release it with `lml_strip_web_free`. Immutable once created.
+typedef struct LmlStripWeb LmlStripWeb;
 
 // A strip pattern (opaque): one rectifying strip per level curve that could carry one, with
 // its flat unrolling and metrics, and the curves that were skipped. Create it with
@@ -675,7 +680,8 @@ typedef struct LmlPiece {
 } LmlPiece;
 
 // The state of a net optimisation after `lml_net_step` (written by the library; the caller owns
-// the struct). Angles in degrees; index 0 is the first field, 1 the second.
+// the struct). Angles in degrees; index 0 is the first field, 1 the second (of a 3-web: F and H,
+// whose crossings the intersection fields describe; `lml_net_web_report` gives the third family).
 typedef struct LmlNetReport {
   // Iterations run since the session was created.
   uint64_t iterations;
@@ -726,6 +732,42 @@ typedef struct LmlNode {
   // edge lies from the rectifying developable, in the mesh's units.
   double binormal_offset[2];
 } LmlNode;
+
+// The state of a 3-web after `lml_net_step` beyond what `LmlNetReport` says of its first two
+// families (written by the library; the caller owns the struct). Angles in degrees.
+typedef struct LmlWebReport {
+  // RMS and maximum of the third family's |θ_measured − θ| over its measured vertices.
+  double angle_error_rms_degrees;
+  double angle_error_max_degrees;
+  // Singular vertices of the third field.
+  uint64_t singular_vertex_count;
+  // Largest and RMS |F + G + H| over the vertices (Eq. 18), relative to the largest of the
+  // three fields' ranges.
+  double residual_max;
+  double residual_rms;
+  // The factor on the third field's terms in the weight stage in force (it grows to 1 at the
+  // final stage: the third family joins gradually).
+  double third_family_factor;
+  // Index 0: how the third family crosses the first; 1: how it crosses the second. Smallest and
+  // area-weighted mean unsigned intersection angle over the faces.
+  double min_intersection_degrees[2];
+  double mean_intersection_degrees[2];
+  // Faces where the third family crosses the first (0) or the second (1) below the minimum angle.
+  uint64_t faces_below_min[2];
+} LmlWebReport;
+
+// One node of a 3-web gridshell: where a strip of one family crosses a strip of another. At a
+// vertex where three families meet there is a node for each pair of them.
+typedef struct LmlWebNode {
+  // The two families that cross here (0: F, 1: H, 2: G), the smaller first.
+  uint32_t families[2];
+  // Always 0.
+  uint32_t reserved;
+  // The node: `node.vertex` indexes the web's vertices (`lml_strip_web_vertices`);
+  // `node.strips[i]`, `node.arc_lengths[i]` and the diagnostics at index `i` refer to the
+  // strips of family `families[i]` (as in `lml_strips_metrics` of that family's strips).
+  struct LmlNode node;
+} LmlWebNode;
 
 // The state of a surface optimisation after `lml_reshape_step` (written by the library; the
 // caller owns the struct). Lengths in the mesh's units, angles in degrees; energies unweighted
@@ -1302,11 +1344,13 @@ LmlStatus lml_curves_new_uniform(const struct LmlField *field,
                                  double spacing,
                                  struct LmlCurves **out);
 
-// Like `lml_curves_new_uniform` on field `k` (0 or 1) of a net session: the base curves of that
-// family's strips (build them with `lml_strips_new` at the family's θ, then the net's nodes with
-// `lml_strip_net_new`).
+// Like `lml_curves_new_uniform` on field `k` of a net session (below `lml_net_family_count`):
+// the base curves of that family's strips (build them with `lml_strips_new` at the family's θ,
+// then the net's nodes with `lml_strip_net_new`). A 3-web's strips take the curves at its
+// even-pace levels instead (`lml_curves_new_from_web`).
 //
-// Returns as `lml_curves_new_uniform`, and `LML_STATUS_INVALID_ARGUMENT` for `k` > 1.
+// Returns as `lml_curves_new_uniform`, and `LML_STATUS_INVALID_ARGUMENT` for `k` not below the
+// family count.
 LmlStatus lml_curves_new_from_net(const struct LmlNet *net,
                                   uint32_t k,
                                   size_t count,
@@ -1946,7 +1990,7 @@ LmlStatus lml_net_start(const struct LmlMesh *mesh,
 // Releases a session. NULL is accepted and ignored. The handle must not be used again.
 void lml_net_free(struct LmlNet *net);
 
-// Serialises the whole session (mesh, both fields with their auxiliary variables, parameters,
+// Serialises the whole session (mesh, every field with its auxiliary variables, parameters,
 // the intersection target's orientation, weight stage, solver damping) as bytes: the magic
 // `"LMLN"`, a little-endian `uint32_t` format version, then the state. Portable across
 // platforms; a restored session continues bit for bit as the original would have.
@@ -1962,7 +2006,8 @@ LmlStatus lml_net_save(const struct LmlNet *net, uint8_t *out, size_t capacity, 
 // to NULL on failure.
 //
 // Every restored quantity is checked: the mesh as in `lml_mesh_new`, parameters as in
-// `lml_net_new`, scale factors normal and positive, every value finite, the fields within ±1e100,
+// `lml_net_new` (or `lml_web_new` for a 3-web: the restored session has the saved one's family
+// count), scale factors normal and positive, every value finite, the fields within ±1e100,
 // counters and damping in range.
 //
 // Returns `LML_STATUS_OK`; `LML_STATUS_CORRUPT_DATA` (empty, truncated, damaged or inconsistent
@@ -1981,16 +2026,21 @@ LmlStatus lml_net_step(struct LmlNet *net, uint32_t max_iterations, struct LmlNe
 // Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
 LmlStatus lml_net_report(const struct LmlNet *net, struct LmlNetReport *report);
 
-// Copies field `k` (0 or 1; one value per vertex, in the scale of its start field) into
+// Copies field `k` (below `lml_net_family_count`: 0 or 1 for a net, 0, 1 or 2 for a 3-web; one
+// value per vertex, in the scale of its start field, a 3-web's three in one common scale) into
 // `values` with the two-call pattern: `*needed` receives the vertex count; with `capacity`
 // below it nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned (`values` may be
 // NULL then). Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or
-// `LML_STATUS_INVALID_ARGUMENT` (NULL net or `needed`, `k` > 1).
+// `LML_STATUS_INVALID_ARGUMENT` (NULL net or `needed`, `k` not below the family count).
 LmlStatus lml_net_field(const struct LmlNet *net,
                         uint32_t k,
                         double *values,
                         size_t capacity,
                         size_t *needed);
+
+// Writes the session's number of families to `*count`: 2 for a net (`lml_net_new`), 3 for a
+// 3-web (`lml_web_new`). Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_net_family_count(const struct LmlNet *net, uint32_t *count);
 
 // Builds the quad net of a net session's two fields at the levels of their strips, and the
 // strips' nodes.
@@ -2044,6 +2094,188 @@ LmlStatus lml_strip_net_quads(const struct LmlStripNet *net,
 // Returns as `lml_strip_net_vertices`.
 LmlStatus lml_strip_net_nodes(const struct LmlStripNet *net,
                               struct LmlNode *nodes,
+                              size_t capacity,
+                              size_t *needed);
+
+// Starts a 3-web optimisation (paper Sec. 4.2) with the default weights: fields F and H of the
+// first two families and G of the third, the diagonal one, held to F + G + H = 0 (Eq. 18) at
+// every vertex. The result is an `LmlNet` session: step it with `lml_net_step`, read it with
+// `lml_net_report` (the first two families), `lml_net_web_report` (Eq. 18 and the third family)
+// and `lml_net_field` (k = 0, 1, 2), save it with `lml_net_save`, release it with `lml_net_free`.
+//
+// - `mesh`: the surface (copied).
+// - `thetas`: 3 doubles, the families of F, H and G by their angles θ in [0°, 180°] as in
+//   `lml_net_new` (0° and 180° asymptotic curves, 90° geodesics, others pseudo-geodesics).
+//   E.g. {0, 0, 90}: an AAG web. Copied.
+// - `initial_fields`: `2 n` doubles, F's `n` values (one per vertex) then H's, as in
+//   `lml_net_new` (e.g. from `lml_net_start` at the first two θ); G starts as −F − H, all three
+//   in one common scale. Copied.
+// - `min_intersection_degrees`: minimum intersection angle of every pair of families, in
+//   [0°, 90°).
+// - `intersection_degrees`: target intersection angle of F and H in (0°, 180°) held as a weak
+//   term, or NaN for none.
+// - `out`: receives the new session (release with `lml_net_free`); NULL on failure.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `n` ≠ vertex count, a
+// value out of range, naming it: `thetas[i]` for a θ); `LML_STATUS_SINGULAR_FIELD` (a constant
+// field).
+LmlStatus lml_web_new(const struct LmlMesh *mesh,
+                      const double *thetas,
+                      const double *initial_fields,
+                      size_t n,
+                      double min_intersection_degrees,
+                      double intersection_degrees,
+                      struct LmlNet **out);
+
+// Writes a 3-web's state after the last `lml_net_step` (or after creation) to `*report`.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument, or `net` a net of two
+// families, which has no third family).
+LmlStatus lml_net_web_report(const struct LmlNet *net, struct LmlWebReport *report);
+
+// Copies the even-pace levels of family `k` (0: F, 1: H, 2: G) of a 3-web's current fields into
+// `levels`, increasing. F's and H's levels share one pace, the smaller of `range / (count + 1)`
+// for `count_f` levels of F and `count_h` of H, each spread centred over its field's range, so
+// that the diagonals of their net are G's levels (with `kagome` = 1 the diagonals shifted by half
+// a pace: a Kagome pattern, whose three families never meet at one point). The same arguments
+// give the same levels in `lml_curves_new_from_web` and `lml_strip_web_new` while the session is
+// not stepped.
+//
+// - `count_f`, `count_h`: in [1, `LML_MAX_LEVELS`]; the family with the wider range at that
+//   pace gets more levels than asked.
+// - `kagome`: 0 (a 3-web of triangles) or 1 (a Kagome pattern of triangles and hexagons).
+// - `k`: the family, 0, 1 or 2.
+//
+// Two-call pattern: `*needed` receives the level count; with `capacity` below it nothing is
+// copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned (`levels` may be NULL then).
+// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL`, `LML_STATUS_INVALID_ARGUMENT` (NULL
+// `net` or `needed`, `net` a net of two families, a count, `kagome` or `k` out of range: named)
+// or `LML_STATUS_SINGULAR_FIELD` (a field has become constant).
+LmlStatus lml_web_levels(const struct LmlNet *net,
+                         size_t count_f,
+                         size_t count_h,
+                         uint32_t kagome,
+                         uint32_t k,
+                         double *levels,
+                         size_t capacity,
+                         size_t *needed);
+
+// Extracts the level curves of field `k` (0: F, 1: H, 2: G) of a 3-web at its even-pace levels
+// (`lml_web_levels` with the same `count_f`, `count_h` and `kagome`): the base curves of that
+// family's strips (build them with `lml_strips_new` at the family's θ, then the web with
+// `lml_strip_web_new`). `spacing` as in `lml_curves_new`: 0 keeps the polylines' own vertices, a
+// positive spacing resamples them at about that arc length. `out` receives the new curves
+// (release with `lml_curves_free`); NULL on failure.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `net` a net of two
+// families, a count, `kagome` or `k` out of range, `spacing` as in `lml_curves_new`: named);
+// `LML_STATUS_SINGULAR_FIELD` (a field has become constant).
+LmlStatus lml_curves_new_from_web(const struct LmlNet *net,
+                                  uint32_t k,
+                                  size_t count_f,
+                                  size_t count_h,
+                                  uint32_t kagome,
+                                  double spacing,
+                                  struct LmlCurves **out);
+
+// Builds the web of a 3-web session's fields at its even-pace levels and the nodes of its strips.
+//
+// - `net`: a 3-web session (`lml_web_new`), converged or not; its current fields are used. Not
+//   retained.
+// - `count_f`, `count_h`, `kagome`: the levels, as in `lml_web_levels`; with `kagome` = 1 the
+//   web is a Kagome pattern (every vertex the crossing of two families; faces triangles and
+//   hexagons), else a triangle mesh whose vertices are crossings of all three families or of two
+//   (where the third's level is missing near the boundary).
+// - `strips_f`, `strips_h`, `strips_g`: the strips of families 0, 1 and 2, built on the curves
+//   of `lml_curves_new_from_web` for the same levels (every strip must lie on one of its
+//   family's levels). Not retained.
+// - `out`: receives the new web (release with `lml_strip_web_free`); NULL on failure.
+//
+// A crossing of two families' levels becomes a node when each has a strip on its level passing
+// within two mean edge lengths of it.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `net` a net of two
+// families, a count or `kagome` out of range, strips on other levels: named);
+// `LML_STATUS_SINGULAR_FIELD` (a field has become constant).
+LmlStatus lml_strip_web_new(const struct LmlNet *net,
+                            size_t count_f,
+                            size_t count_h,
+                            uint32_t kagome,
+                            const struct LmlStrips *strips_f,
+                            const struct LmlStrips *strips_h,
+                            const struct LmlStrips *strips_g,
+                            struct LmlStripWeb **out);
+
+// Releases a web. NULL is accepted and ignored. The handle must not be used again.
+void lml_strip_web_free(struct LmlStripWeb *web);
+
+// Copies the web's vertices (crossings of the families' levels, ordered by their levels of F,
+// then of H) as `3 * count` doubles (x, y, z) into `xyz`, with the two-call pattern: `*needed`
+// receives the double count; with `capacity` below it nothing is copied and
+// `LML_STATUS_BUFFER_TOO_SMALL` is returned (`xyz` may be NULL then). Returns `LML_STATUS_OK`,
+// `LML_STATUS_BUFFER_TOO_SMALL` or `LML_STATUS_INVALID_ARGUMENT` (NULL web or `needed`).
+LmlStatus lml_strip_web_vertices(const struct LmlStripWeb *web,
+                                 double *xyz,
+                                 size_t capacity,
+                                 size_t *needed);
+
+// Copies, for every vertex, the index of the level of each family through it (into that
+// family's `lml_web_levels`), −1 where none of its curves passes: `3 * count` values (family 0,
+// 1, 2 of vertex 0, then of vertex 1, …) into `levels`, with the two-call pattern. Two or three
+// are set at every vertex; exactly two in a Kagome pattern. Returns as `lml_strip_web_vertices`.
+LmlStatus lml_strip_web_vertex_levels(const struct LmlStripWeb *web,
+                                      int64_t *levels,
+                                      size_t capacity,
+                                      size_t *needed);
+
+// Copies the number of vertices of each face (3 for a triangle, 6 for a Kagome pattern's
+// hexagon) into `sizes`, with the two-call pattern (`*needed` receives the face count). Faces
+// are oriented as the net of F and H, (i, j), (i, j + 1), (i + 1, j + 1), (i + 1, j).
+// Returns as `lml_strip_web_vertices`.
+LmlStatus lml_strip_web_face_sizes(const struct LmlStripWeb *web,
+                                   uint32_t *sizes,
+                                   size_t capacity,
+                                   size_t *needed);
+
+// Copies the faces' vertex indices (into `lml_strip_web_vertices`), one face after another as
+// `lml_strip_web_face_sizes` cuts them, into `indices`, with the two-call pattern.
+// Returns as `lml_strip_web_vertices`.
+LmlStatus lml_strip_web_face_vertices(const struct LmlStripWeb *web,
+                                      uint32_t *indices,
+                                      size_t capacity,
+                                      size_t *needed);
+
+// Copies the number of vertices of each polyline of family `family` (0, 1 or 2) into `sizes`,
+// with the two-call pattern (`*needed` receives the polyline count). A polyline is a maximal run
+// (2 vertices or more) of consecutive web vertices along one level of the family.
+// Returns as `lml_strip_web_vertices`, and `LML_STATUS_INVALID_ARGUMENT` for `family` > 2.
+LmlStatus lml_strip_web_polyline_sizes(const struct LmlStripWeb *web,
+                                       uint32_t family,
+                                       uint32_t *sizes,
+                                       size_t capacity,
+                                       size_t *needed);
+
+// Copies the vertex indices of family `family`'s polylines, one after another as
+// `lml_strip_web_polyline_sizes` cuts them, into `indices`, with the two-call pattern.
+// Returns as `lml_strip_web_polyline_sizes`.
+LmlStatus lml_strip_web_polyline_vertices(const struct LmlStripWeb *web,
+                                          uint32_t family,
+                                          uint32_t *indices,
+                                          size_t capacity,
+                                          size_t *needed);
+
+// Copies the level index (into the family's `lml_web_levels`) of each of family `family`'s
+// polylines into `levels`, with the two-call pattern. Returns as `lml_strip_web_polyline_sizes`.
+LmlStatus lml_strip_web_polyline_levels(const struct LmlStripWeb *web,
+                                        uint32_t family,
+                                        uint32_t *levels,
+                                        size_t capacity,
+                                        size_t *needed);
+
+// Copies the nodes into `nodes`, with the two-call pattern (`*needed` receives the node count),
+// ordered by vertex, at a vertex by pair of families.
+// Returns as `lml_strip_web_vertices`.
+LmlStatus lml_strip_web_nodes(const struct LmlStripWeb *web,
+                              struct LmlWebNode *nodes,
                               size_t capacity,
                               size_t *needed);
 

@@ -54,19 +54,6 @@ namespace Lamella.Grasshopper
             pManager.AddTextParameter("Report", "R", "Iterations, each family's angle error, the deviation from the reference, the node ruling angles, each family's strip verdict.", GH_ParamAccess.item);
         }
 
-        /// <summary>The points of each polyline of <paramref name="lines"/> at <paramref name="xyz"/>, packed.</summary>
-        private static Packed PolylinePoints(double[] xyz, int[][] lines)
-        {
-            var points = new List<double[]>(lines.Length);
-            foreach (int[] line in lines)
-            {
-                var item = new double[3 * line.Length];
-                for (int i = 0; i < line.Length; i++) Array.Copy(xyz, 3 * line[i], item, 3 * i, 3);
-                points.Add(item);
-            }
-            return Packing.Pack(points, 3);
-        }
-
         protected override void Solve(IGH_DataAccess DA)
         {
             Mesh input = null, netInput = null;
@@ -159,7 +146,7 @@ namespace Lamella.Grasshopper
             var points = new List<Point3d>(nodes.Length);
             var angles = new List<double>(nodes.Length);
             var axes = new List<Vector3d>(nodes.Length);
-            for (int k = 0; k < 2; k++) curves.AddRange(RhinoConversion.Polylines(PolylinePoints(xyz, polylines[k])), new GH_Path(k));
+            for (int k = 0; k < 2; k++) curves.AddRange(RhinoConversion.Polylines(Packing.Gather(xyz, polylines[k])), new GH_Path(k));
             foreach (BaseMeshNode node in nodes)
             {
                 points.Add(RhinoConversion.Point(xyz, node.Vertex));

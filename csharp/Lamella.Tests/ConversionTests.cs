@@ -61,6 +61,25 @@ namespace Lamella.Tests
             Assert.Throws<ArgumentException>(() => Packing.Unpack(new Packed(new double[6], new[] { 0, 2, 1 }, 3)));
         }
 
+        [Test]
+        public void IndexedPolylinesGatherTheirPoints()
+        {
+            double[] xyz = { 0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 3, 3 };
+            Packed packed = Packing.Gather(xyz, new[] { new[] { 3, 0 }, new[] { 1, 2, 3 } });
+            CollectionAssert.AreEqual(new[] { 0, 2, 5 }, packed.Offsets);
+            CollectionAssert.AreEqual(new double[] { 3, 3, 3, 0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 3, 3 }, packed.Values);
+            Assert.Throws<ArgumentOutOfRangeException>(() => Packing.Gather(xyz, new[] { new[] { 4 } }));
+        }
+
+        [Test]
+        public void FacesOfAnySizeBecomeFansOfTriangles()
+        {
+            // A triangle and a hexagon (a Kagome pattern's faces): 1 + 4 triangles, each from the face's first corner.
+            int[] triangles = MeshArrays.FanTriangles(new[] { new[] { 0, 1, 2 }, new[] { 3, 4, 5, 6, 7, 8 } });
+            CollectionAssert.AreEqual(new[] { 0, 1, 2, 3, 4, 5, 3, 5, 6, 3, 6, 7, 3, 7, 8 }, triangles);
+            Assert.Throws<ArgumentException>(() => MeshArrays.FanTriangles(new[] { new[] { 0, 1 } }));
+        }
+
         /// <summary>Two strips in the C ABI's layout: 3 and 2 centre points, so 6 and 4 vertices, 2 and 1 quads.</summary>
         private static readonly int[] VertexOffsets = { 0, 6, 10 };
         private static readonly int[] QuadOffsets = { 0, 2, 3 };

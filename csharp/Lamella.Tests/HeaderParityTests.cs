@@ -45,6 +45,8 @@ namespace Lamella.Tests
             { "LmlBaseMeshReport", typeof(BaseMeshReportRecord) },
             { "LmlBaseMeshNode", typeof(BaseMeshNodeRecord) },
             { "LmlNode", typeof(NodeRecord) },
+            { "LmlWebReport", typeof(WebReportRecord) },
+            { "LmlWebNode", typeof(WebNodeRecord) },
             { "LmlShadingSite", typeof(ShadingSite) },
             { "LmlShadingReport", typeof(ShadingReportRecord) },
             { "LmlSunPathSummary", typeof(SunPathSummaryRecord) },

@@ -31,16 +31,33 @@ namespace Lamella
         }
 
         /// <summary>
-        /// The level curves of field <paramref name="k"/> (0 or 1) of a net at <paramref name="count"/> values spread uniformly
-        /// over its range, extremes left out: the base curves of that family's strips (<c>lml_curves_new_from_net</c>).
+        /// The level curves of field <paramref name="k"/> (below <see cref="NetSolver.FamilyCount"/>) of a net at
+        /// <paramref name="count"/> values spread uniformly over its range, extremes left out: the base curves of that
+        /// family's strips (<c>lml_curves_new_from_net</c>). A 3-web's strips take <see cref="OfWeb"/> instead.
         /// </summary>
         public static LevelCurves OfNet(NetSolver net, int k, int count, double spacing)
         {
             if (net == null) throw new ArgumentNullException(nameof(net));
-            if (k < 0 || k > 1) throw new ArgumentOutOfRangeException(nameof(k), "a net has fields 0 and 1");
+            net.CheckFamily(k, nameof(k));
             if (count < 0) throw new ArgumentOutOfRangeException(nameof(count));
             CurvesHandle handle = null;
             Native.Check(net.Locked(h => NativeMethods.lml_curves_new_from_net(h, (uint)k, Native.Size(count), spacing, out handle)));
+            return new LevelCurves(handle);
+        }
+
+        /// <summary>
+        /// The level curves of field <paramref name="k"/> (0: F, 1: H, 2: G) of a 3-web at its even-pace levels
+        /// (<see cref="NetSolver.WebLevels"/> with the same <paramref name="countF"/>, <paramref name="countH"/> and
+        /// <paramref name="kagome"/>): the base curves of that family's strips, for <see cref="StripWeb"/>
+        /// (<c>lml_curves_new_from_web</c>). <paramref name="spacing"/> as in <see cref="AtLevels"/>.
+        /// </summary>
+        /// <exception cref="LamellaException">A net of two families, a count or the spacing out of range (named), a constant field.</exception>
+        public static LevelCurves OfWeb(NetSolver net, int k, int countF, int countH, bool kagome, double spacing)
+        {
+            if (net == null) throw new ArgumentNullException(nameof(net));
+            NetSolver.CheckWebFamily(k, nameof(k));
+            CurvesHandle handle = null;
+            Native.Check(net.WebCall(countF, countH, kagome, (h, f, g, kg) => NativeMethods.lml_curves_new_from_web(h, (uint)k, f, g, kg, spacing, out handle)));
             return new LevelCurves(handle);
         }
 

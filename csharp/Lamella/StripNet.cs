@@ -5,9 +5,10 @@ namespace Lamella
 {
     /// <summary>
     /// One node of a gridshell (<c>LmlNode</c>): where a strip of the first family crosses one of the second (paper
-    /// Sec. 5.1). Lengths in the mesh's unit, angles in degrees.
+    /// Sec. 5.1); of a 3-web's, a <see cref="WebNode"/>, whose per-strip entries (index 0 and 1) are of its two
+    /// <see cref="WebNode.Families"/>. Lengths in the mesh's unit, angles in degrees.
     /// </summary>
-    public sealed class Node
+    public class Node
     {
         internal Node(NodeRecord r)
         {
@@ -30,7 +31,7 @@ namespace Lamella
             SingularPointNear = new[] { r.SingularPointNear[0] != 0, r.SingularPointNear[1] != 0 };
         }
 
-        /// <summary>Index of the crossing among the net's vertices.</summary>
+        /// <summary>Index of the crossing among the net's (or the web's) vertices.</summary>
         public int Vertex { get; }
         /// <summary>Index of the strip of each family (into that family's <see cref="Lamella.Strips"/>).</summary>
         public int[] Strips { get; }

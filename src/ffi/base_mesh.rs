@@ -8,6 +8,7 @@ use super::guard::guarded;
 use super::last_error::set_last_error;
 use super::layout::flat_xyz;
 use super::mesh::LmlMesh;
+use super::net::family;
 use super::raw::{copy_out, element_count, handle, handle_mut, input, release, Out};
 use super::status::LmlStatus;
 use super::strip_net::LmlStripNet;
@@ -126,15 +127,6 @@ impl From<BaseMeshError> for Failure {
             other => Failure::new(LmlStatus::InvalidArgument, other.to_string()),
         }
     }
-}
-
-/// The family of `theta_degrees` (named `name`) as `lml_net_new` reads it: 0° and 180°
-/// asymptotic, 90° geodesic, else pseudo-geodesic.
-fn family(theta_degrees: f64, name: &str) -> Result<Family, Failure> {
-    if !(0.0..=180.0).contains(&theta_degrees) {
-        return Err(Failure::argument(name, format!("must lie in [0, 180], got {theta_degrees}")));
-    }
-    Ok(Family::from_theta(theta_degrees))
 }
 
 /// A session optimising `net` near `reference` with the default weights.

@@ -30,7 +30,7 @@ pub struct LmlCurves {
 }
 
 /// The level curves of the current field at `levels`, resampled to `spacing` unless it is 0.
-fn extract(mesh: &Arc<TriMesh>, values: &[f64], levels: impl FnOnce(&[f64]) -> Result<Vec<f64>, Failure>, spacing: f64) -> Result<LmlCurves, Failure> {
+pub(super) fn extract(mesh: &Arc<TriMesh>, values: &[f64], levels: impl FnOnce(&[f64]) -> Result<Vec<f64>, Failure>, spacing: f64) -> Result<LmlCurves, Failure> {
     if !(spacing.is_finite() && spacing >= 0.0) {
         return Err(Failure::argument("spacing", format!("must be finite and ≥ 0 (0: no resampling), got {spacing}")));
     }
@@ -102,11 +102,13 @@ pub unsafe extern "C" fn lml_curves_new_uniform(field: *const LmlField, count: u
     })
 }
 
-/// Like `lml_curves_new_uniform` on field `k` (0 or 1) of a net session: the base curves of that
-/// family's strips (build them with `lml_strips_new` at the family's θ, then the net's nodes with
-/// `lml_strip_net_new`).
+/// Like `lml_curves_new_uniform` on field `k` of a net session (below `lml_net_family_count`):
+/// the base curves of that family's strips (build them with `lml_strips_new` at the family's θ,
+/// then the net's nodes with `lml_strip_net_new`). A 3-web's strips take the curves at its
+/// even-pace levels instead (`lml_curves_new_from_web`).
 ///
-/// Returns as `lml_curves_new_uniform`, and `LML_STATUS_INVALID_ARGUMENT` for `k` > 1.
+/// Returns as `lml_curves_new_uniform`, and `LML_STATUS_INVALID_ARGUMENT` for `k` not below the
+/// family count.
 #[no_mangle]
 pub unsafe extern "C" fn lml_curves_new_from_net(net: *const LmlNet, k: u32, count: usize, spacing: f64, out: *mut *mut LmlCurves) -> LmlStatus {
     guarded(|| {

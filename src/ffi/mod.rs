@@ -13,7 +13,9 @@
 //! array outputs, and the initialisation of Sec. 3.2.2: boundary start points, traced guide
 //! curves ([`LmlGuides`]) and initial fields from guides or sketched strokes; constant-slope
 //! families (Sec. 5.2.3) with their start field and reachable region; and nets of two
-//! families ([`LmlNet`], paper Sec. 4.1) with their quad net and nodes ([`LmlStripNet`]); the
+//! families ([`LmlNet`], paper Sec. 4.1) with their quad net and nodes ([`LmlStripNet`]), and
+//! 3-webs of three (the same session from `lml_web_new`, Sec. 4.2) with their web of triangles or
+//! Kagome pattern and nodes ([`LmlStripWeb`]); the
 //! optimisation of a net's vertices toward exact families, torsion-free nodes or constant slopes
 //! ([`LmlBaseMesh`], Sec. 3.5, 5.2); surface optimisation ([`LmlReshape`], Sec. 3.3);
 //! shading designs ([`LmlShading`], Sec. 6: site, labels, strips with one θ per curve, the
@@ -58,6 +60,8 @@ mod slope;
 mod fabrication;
 mod net;
 mod strip_net;
+mod web;
+mod strip_web;
 mod view;
 mod reshape;
 mod base_mesh;
@@ -88,12 +92,14 @@ pub use status::*;
 pub use strip_diagnostics::*;
 pub use strip_metrics::*;
 pub use strip_net::*;
+pub use strip_web::*;
 pub use strip_params::*;
 pub use strips::*;
 pub use surfaces::*;
 pub use trace_options::*;
 pub use version::*;
 pub use view::*;
+pub use web::*;
 
 #[cfg(test)]
 mod tests {
@@ -111,5 +117,7 @@ mod tests {
         movable::<LmlFabrication>();
         movable::<LmlShading>();
         movable::<LmlBaseMesh>();
+        movable::<LmlNet>();
+        movable::<LmlStripWeb>();
     }
 }

@@ -1,19 +1,21 @@
-//! `LmlNet`: a net session of two families (paper Sec. 4.1), stepped like `LmlField`: create
-//! from two start fields, step until converged, read each field, free.
+//! `LmlNet`: a net session of two families (paper Sec. 4.1) or a 3-web of three (Sec. 4.2),
+//! stepped like `LmlField`: create from two start fields, step until converged, read each field,
+//! free.
 
 use super::guard::guarded;
 use super::mesh::LmlMesh;
 use super::raw::{copy_out, handle, handle_mut, input, release, Out};
 use super::status::LmlStatus;
 use super::failure::Failure;
-use crate::field::{Family, FieldError};
+use crate::field::{Family, StepReport};
 use crate::initialisation::{SearchError, SearchOptions};
 use crate::mesh::TriMesh;
-use crate::net::{net_start, NetParams, NetReport, NetSolver};
+use crate::net::{net_start, NetParams, NetReport, NetSolver, WebReport};
 use std::sync::Arc;
 
-/// A net optimisation session (opaque): a copy of the mesh, the two fields, their auxiliary
-/// variables and the solver state. Create it with `lml_net_new`, release it with `lml_net_free`.
+/// A net optimisation session (opaque): a copy of the mesh, the two fields (three for a 3-web),
+/// their auxiliary variables and the solver state. Create it with `lml_net_new` or
+/// `lml_web_new`, release it with `lml_net_free`.
 pub struct LmlNet {
     solver: NetSolver,
     /// The surface, shared with the curves extracted from the net's fields.
@@ -21,17 +23,104 @@ pub struct LmlNet {
 }
 
 impl LmlNet {
-    /// Field `k` (0 or 1), or the failure naming `k`.
+    /// The number of families: 2 for a net, 3 for a 3-web.
+    pub(crate) fn family_count(&self) -> usize {
+        self.solver.params().families.len()
+    }
+
+    /// Field `k` (below the family count), or the failure naming `k`.
     pub(crate) fn field(&self, k: u32) -> Result<Vec<f64>, Failure> {
-        if k > 1 {
-            return Err(Failure::new(LmlStatus::InvalidArgument, format!("k: a net has fields 0 and 1, got {k}")));
+        match self.family_count() {
+            count if (k as usize) < count => Ok(self.solver.field(k as usize)),
+            2 => Err(Failure::argument("k", format!("a net of two families has fields 0 and 1, got {k}"))),
+            _ => Err(Failure::argument("k", format!("a 3-web has fields 0, 1 and 2, got {k}"))),
         }
-        Ok(self.solver.field(k as usize))
+    }
+
+    /// A 3-web's last report (after the last step, or the creation): its Eq. 18 residual and
+    /// third-family crossings, and the third family's own report; the failure naming `net` for a
+    /// net of two families.
+    pub(crate) fn web_report(&self) -> Result<(&WebReport, &StepReport), Failure> {
+        let report = self.solver.report();
+        match (&report.web, report.families.get(2)) {
+            (Some(web), Some(third)) => Ok((web, third)),
+            _ => Err(not_a_web()),
+        }
+    }
+
+    /// A 3-web's three fields, or the failure naming `net` for a net of two families.
+    pub(crate) fn web_fields(&self) -> Result<[Vec<f64>; 3], Failure> {
+        if self.family_count() != 3 {
+            return Err(not_a_web());
+        }
+        Ok([0, 1, 2].map(|k| self.solver.field(k)))
     }
 }
 
+/// The failure of a web function given a net of two families.
+fn not_a_web() -> Failure {
+    Failure::argument("net", "is a net of two families, not a 3-web (create one with lml_web_new)")
+}
+
+/// The family of `theta_degrees` (the argument `name`) as `lml_net_new` reads it: 0° and 180°
+/// asymptotic, 90° geodesic, else pseudo-geodesic; NaN or outside [0°, 180°] is refused.
+pub(super) fn family(theta_degrees: f64, name: &str) -> Result<Family, Failure> {
+    if !(0.0..=180.0).contains(&theta_degrees) {
+        return Err(Failure::argument(name, format!("must lie in [0, 180], got {theta_degrees}")));
+    }
+    Ok(Family::from_theta(theta_degrees))
+}
+
+/// The parameters of a net (two `thetas`) or a 3-web (three: the third the diagonal family),
+/// each θ given with its argument's name, with the default weights and the angles of
+/// `lml_net_new`, checked.
+fn params(thetas: &[(&str, f64)], min_intersection_degrees: f64, intersection_degrees: f64) -> Result<NetParams, Failure> {
+    let families = thetas.iter().map(|&(name, theta)| family(theta, name)).collect::<Result<Vec<Family>, Failure>>()?;
+    let mut params = match families[..] {
+        [f, g] => NetParams::new(f, g),
+        [f, h, g] => NetParams::web(f, h, g),
+        _ => unreachable!("a net has two families and a 3-web three"),
+    };
+    params.min_intersection_degrees = min_intersection_degrees;
+    params.intersection_degrees = (!intersection_degrees.is_nan()).then_some(intersection_degrees);
+    params.validate()?;
+    Ok(params)
+}
+
+/// A new session of the families `thetas` (read once the other arguments are checked; see
+/// [`params`]) from the two start fields `initial_fields` (`2 n` doubles), handed to `out`: the
+/// body of `lml_net_new` and `lml_web_new`.
+///
+/// # Safety
+/// The pointer contracts of `lml_net_new`.
+pub(super) unsafe fn create(
+    mesh: *const LmlMesh,
+    thetas: impl FnOnce() -> Result<Vec<(&'static str, f64)>, Failure>,
+    initial_fields: *const f64,
+    n: usize,
+    min_intersection_degrees: f64,
+    intersection_degrees: f64,
+    out: *mut *mut LmlNet,
+) -> Result<LmlStatus, Failure> {
+    // SAFETY (all blocks): forwarded contracts.
+    let mut out = unsafe { Out::new(out, "out") }?;
+    out.set(std::ptr::null_mut());
+    let mesh = unsafe { handle(mesh, "mesh") }?;
+    if n != mesh.mesh.vertex_count() {
+        return Err(Failure::argument("n", format!("{n} values per field, but the mesh has {} vertices", mesh.mesh.vertex_count())));
+    }
+    // 2 n cannot overflow: n is the vertex count of a mesh in memory.
+    let fields = unsafe { input(initial_fields, 2 * n, "initial_fields") }?;
+    let params = params(&thetas()?, min_intersection_degrees, intersection_degrees)?;
+    let (first, second) = fields.split_at(n);
+    let solver = NetSolver::new(&mesh.mesh, &[first.to_vec(), second.to_vec()], params)?;
+    out.set_owned(LmlNet { solver, mesh: Arc::new(mesh.mesh.clone()) });
+    Ok(LmlStatus::Ok)
+}
+
 /// The state of a net optimisation after `lml_net_step` (written by the library; the caller owns
-/// the struct). Angles in degrees; index 0 is the first field, 1 the second.
+/// the struct). Angles in degrees; index 0 is the first field, 1 the second (of a 3-web: F and H,
+/// whose crossings the intersection fields describe; `lml_net_web_report` gives the third family).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LmlNetReport {
@@ -96,23 +185,9 @@ pub unsafe extern "C" fn lml_net_new(
     out: *mut *mut LmlNet,
 ) -> LmlStatus {
     guarded(|| {
-        // SAFETY (all blocks): the pointer contracts are those documented above.
-        let mut out = unsafe { Out::new(out, "out") }?;
-        out.set(std::ptr::null_mut());
-        let mesh = unsafe { handle(mesh, "mesh") }?;
-        if n != mesh.mesh.vertex_count() {
-            return Err(FieldError::FieldLength { expected: mesh.mesh.vertex_count(), actual: n }.into());
-        }
-        // 2 n cannot overflow: n is the vertex count of a mesh in memory.
-        let fields = unsafe { input(initial_fields, 2 * n, "initial_fields") }?;
-        let family = |theta: f64| Family::from_theta(theta);
-        let mut params = NetParams::new(family(theta_degrees_f), family(theta_degrees_g));
-        params.min_intersection_degrees = min_intersection_degrees;
-        params.intersection_degrees = (!intersection_degrees.is_nan()).then_some(intersection_degrees);
-        let (first, second) = fields.split_at(n);
-        let solver = NetSolver::new(&mesh.mesh, &[first.to_vec(), second.to_vec()], params)?;
-        out.set_owned(LmlNet { solver, mesh: Arc::new(mesh.mesh.clone()) });
-        Ok(LmlStatus::Ok)
+        // SAFETY: the pointer contracts are those documented above.
+        let thetas = || Ok(vec![("theta_degrees_f", theta_degrees_f), ("theta_degrees_g", theta_degrees_g)]);
+        unsafe { create(mesh, thetas, initial_fields, n, min_intersection_degrees, intersection_degrees, out) }
     })
 }
 
@@ -140,9 +215,7 @@ pub unsafe extern "C" fn lml_net_start(
     guarded(|| {
         // SAFETY (all blocks): live mesh handle; `fields` writable for `capacity` doubles; `needed` writable.
         let mesh = unsafe { handle(mesh, "mesh") }?;
-        let mut params = NetParams::new(Family::from_theta(theta_degrees_f), Family::from_theta(theta_degrees_g));
-        params.min_intersection_degrees = min_intersection_degrees;
-        params.validate()?;
+        let params = params(&[("theta_degrees_f", theta_degrees_f), ("theta_degrees_g", theta_degrees_g)], min_intersection_degrees, f64::NAN)?;
         let n = mesh.mesh.vertex_count();
         if capacity < 2 * n || fields.is_null() {
             // Nothing to compute: report the size only.
@@ -161,13 +234,13 @@ pub unsafe extern "C" fn lml_net_start(
 #[no_mangle]
 pub unsafe extern "C" fn lml_net_free(net: *mut LmlNet) {
     guarded(|| {
-        // SAFETY: `net` is NULL or a live handle from lml_net_new.
+        // SAFETY: `net` is NULL or a live handle from lml_net_new, lml_web_new or lml_net_load.
         unsafe { release(net) };
         Ok(LmlStatus::Ok)
     });
 }
 
-/// Serialises the whole session (mesh, both fields with their auxiliary variables, parameters,
+/// Serialises the whole session (mesh, every field with its auxiliary variables, parameters,
 /// the intersection target's orientation, weight stage, solver damping) as bytes: the magic
 /// `"LMLN"`, a little-endian `uint32_t` format version, then the state. Portable across
 /// platforms; a restored session continues bit for bit as the original would have.
@@ -190,7 +263,8 @@ pub unsafe extern "C" fn lml_net_save(net: *const LmlNet, out: *mut u8, capacity
 /// to NULL on failure.
 ///
 /// Every restored quantity is checked: the mesh as in `lml_mesh_new`, parameters as in
-/// `lml_net_new`, scale factors normal and positive, every value finite, the fields within ±1e100,
+/// `lml_net_new` (or `lml_web_new` for a 3-web: the restored session has the saved one's family
+/// count), scale factors normal and positive, every value finite, the fields within ±1e100,
 /// counters and damping in range.
 ///
 /// Returns `LML_STATUS_OK`; `LML_STATUS_CORRUPT_DATA` (empty, truncated, damaged or inconsistent
@@ -240,16 +314,30 @@ pub unsafe extern "C" fn lml_net_report(net: *const LmlNet, report: *mut LmlNetR
     })
 }
 
-/// Copies field `k` (0 or 1; one value per vertex, in the scale of its start field) into
+/// Copies field `k` (below `lml_net_family_count`: 0 or 1 for a net, 0, 1 or 2 for a 3-web; one
+/// value per vertex, in the scale of its start field, a 3-web's three in one common scale) into
 /// `values` with the two-call pattern: `*needed` receives the vertex count; with `capacity`
 /// below it nothing is copied and `LML_STATUS_BUFFER_TOO_SMALL` is returned (`values` may be
 /// NULL then). Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL` or
-/// `LML_STATUS_INVALID_ARGUMENT` (NULL net or `needed`, `k` > 1).
+/// `LML_STATUS_INVALID_ARGUMENT` (NULL net or `needed`, `k` not below the family count).
 #[no_mangle]
 pub unsafe extern "C" fn lml_net_field(net: *const LmlNet, k: u32, values: *mut f64, capacity: usize, needed: *mut usize) -> LmlStatus {
     guarded(|| {
         // SAFETY (both blocks): live handle; `values` writable for `capacity` doubles; `needed` writable.
         let net = unsafe { handle(net, "net") }?;
         unsafe { copy_out(&net.field(k)?, values, capacity, needed, "values") }
+    })
+}
+
+/// Writes the session's number of families to `*count`: 2 for a net (`lml_net_new`), 3 for a
+/// 3-web (`lml_web_new`). Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+#[no_mangle]
+pub unsafe extern "C" fn lml_net_family_count(net: *const LmlNet, count: *mut u32) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle; writable `count`.
+        let net = unsafe { handle(net, "net") }?;
+        // 2 or 3 (checked by the solver).
+        unsafe { Out::new(count, "count") }?.set(net.family_count() as u32);
+        Ok(LmlStatus::Ok)
     })
 }

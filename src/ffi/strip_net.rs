@@ -166,6 +166,6 @@ pub unsafe extern "C" fn lml_strip_net_nodes(net: *const LmlStripNet, nodes: *mu
 }
 
 /// A level index as the ABI's `uint32_t`.
-fn level_index(index: usize) -> Result<u32, Failure> {
+pub(super) fn level_index(index: usize) -> Result<u32, Failure> {
     u32::try_from(index).map_err(|_| Failure::new(LmlStatus::InvalidArgument, format!("level index {index} exceeds uint32_t")))
 }

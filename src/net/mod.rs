@@ -20,7 +20,7 @@ mod web;
 
 pub use intersection::intersection_angles;
 pub use nodes::{flat_point, net_nodes, web_nodes, Node};
-pub use params::NetParams;
+pub use params::{NetParams, WEB_GRADIENT_WEIGHT};
 pub use quad_net::{extract_quad_net, quad_net_at, NetVertex, QuadNet};
 pub use problem::NetProblem;
 pub use report::{IntersectionReport, NetReport, WebReport};

@@ -2,7 +2,7 @@
  * status code and runs real solves. Usage:
  *   harness [scratch-directory [part]]
  *       runs every test group, or one part of them: "starts" (meshes, parameters, threads, guides,
- *       constant slope, the start search, surface optimisation) or "pipeline" (nets, base meshes, shading, then field, session, curves,
+ *       constant slope, the start search, surface optimisation, 3-webs) or "pipeline" (nets, base meshes, shading, then field, session, curves,
  *       fabrication, viewer and strips on one solve). A part writes the statuses it provoked to
  *       scratch-directory/statuses, so that scripts/test-c-abi.sh can run both parts side by side
  *       under valgrind (valgrind runs one process on one core) and check them together with
@@ -25,6 +25,7 @@ static void run_starts(const char *scratch, const Cylinder *cylinder, const Cyli
     test_slope(cylinder);
     test_search(small);
     test_reshape(small);
+    test_web();
 }
 
 static void run_pipeline(const Cylinder *cylinder, const Cylinder *small)

@@ -50,6 +50,19 @@ void test_view(const LmlCurves *curves);
  * stepping to convergence, both fields with the two-call pattern against the cylinder's axis,
  * strips on both families with their quad net and nodes. */
 void test_net(const Cylinder *cylinder);
+/* Field `k` of a net or 3-web session (`n` values, owned by the caller), or NULL when it cannot
+ * be read. */
+double *net_field(const LmlNet *net, unsigned k, size_t n);
+/* Saves a net or 3-web session, restores it, and steps both five iterations: every field and the
+ * reports keep the same bits; damaged bytes, a reshape session's magic and NULL arguments are
+ * refused. */
+void check_net_save_and_restore(LmlNet *net, size_t n);
+
+/* A 3-web (Sec. 4.2) on a hyperbolic paraboloid: the AAG web from the asymptotic net's default
+ * start, stepped to convergence, Eq. 18 from the fields read back, the strips of its three
+ * families with the web of triangles and the Kagome pattern and their nodes, a saved session
+ * restored, every invalid input. */
+void test_web(void);
 
 /* Surface optimisation (Sec. 3.3) of the cylinder towards 45 degrees within an absolute tolerance:
  * every invalid input, stepping, positions and deviations against the distance from the axis. */

@@ -80,6 +80,25 @@ def trace_p_curve():
     return p
 
 
+def line(p, x0, y0, x1, y1, colour):
+    for i in range(100):
+        t = i / 99
+        dot(p, int(round(x0 + (x1 - x0) * t)), int(round(y0 + (y1 - y0) * t)), colour)
+
+
+def strip_web():
+    # Three families: two sets of parallels and their diagonals (a 3-web of triangles, Sec. 4.2).
+    p = canvas()
+    for k in range(4):
+        line(p, 2, 3 + 6 * k, 21, 3 + 6 * k, INK)
+        line(p, 3 + 6 * k, 2, 3 + 6 * k, 21, INK)
+    for k in range(-2, 3):
+        for x in range(3, 22):
+            if 3 <= 24 + 6 * k - x <= 21:
+                dot(p, x, 24 + 6 * k - x, ACCENT)
+    return p
+
+
 def library():
     p = strip_field()
     curve(p, lambda x: 21, ACCENT)
@@ -87,5 +106,5 @@ def library():
 
 
 for name, draw in [("StripField", strip_field), ("LevelCurves", level_curves), ("RectifyingStrips", rectifying_strips),
-                   ("StripQuality", strip_quality), ("TracePCurve", trace_p_curve), ("Lamella", library)]:
+                   ("StripQuality", strip_quality), ("TracePCurve", trace_p_curve), ("StripWeb", strip_web), ("Lamella", library)]:
     png(name + ".png", draw())

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 
 namespace Lamella.Conversion
 {
@@ -15,7 +16,7 @@ namespace Lamella.Conversion
             if (faceCorners == null) throw new ArgumentNullException(nameof(faceCorners));
             if (faceCorners.Length % 4 != 0) throw new ArgumentException("faceCorners holds " + faceCorners.Length + " indices, not 4 per face", nameof(faceCorners));
             int vertexCount = xyz.Length / 3;
-            var triangles = new System.Collections.Generic.List<int>(faceCorners.Length * 3 / 2);
+            var triangles = new List<int>(faceCorners.Length * 3 / 2);
             for (int f = 0; f < faceCorners.Length / 4; f++)
             {
                 int a = faceCorners[4 * f], b = faceCorners[4 * f + 1], c = faceCorners[4 * f + 2], d = faceCorners[4 * f + 3];
@@ -35,6 +36,23 @@ namespace Lamella.Conversion
                 {
                     triangles.AddRange(new[] { a, b, d, b, c, d });
                 }
+            }
+            return triangles.ToArray();
+        }
+
+        /// <summary>
+        /// Faces of any number of corners (a web's triangles and a Kagome pattern's hexagons) as triangles: a triangle as
+        /// it is, a larger face as a fan from its first corner (right for convex faces), keeping the orientation.
+        /// </summary>
+        public static int[] FanTriangles(IList<int[]> faces)
+        {
+            if (faces == null) throw new ArgumentNullException(nameof(faces));
+            var triangles = new List<int>();
+            for (int f = 0; f < faces.Count; f++)
+            {
+                int[] face = faces[f];
+                if (face == null || face.Length < 3) throw new ArgumentException("face " + f + " has fewer than three corners", nameof(faces));
+                for (int i = 1; i + 1 < face.Length; i++) triangles.AddRange(new[] { face[0], face[i], face[i + 1] });
             }
             return triangles.ToArray();
         }

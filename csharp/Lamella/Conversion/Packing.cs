@@ -50,6 +50,30 @@ namespace Lamella.Conversion
             return new Packed(values, offsets, dimension);
         }
 
+        /// <summary>
+        /// The points of <paramref name="xyz"/> (x, y, z each) that each item of <paramref name="indices"/> names, in its
+        /// order, packed: polylines given as vertex indices (a net's rows, a web's polylines) as points.
+        /// </summary>
+        public static Packed Gather(double[] xyz, IList<int[]> indices)
+        {
+            if (xyz == null) throw new ArgumentNullException(nameof(xyz));
+            if (indices == null) throw new ArgumentNullException(nameof(indices));
+            var items = new List<double[]>(indices.Count);
+            for (int k = 0; k < indices.Count; k++)
+            {
+                int[] line = indices[k];
+                var item = new double[3 * line.Length];
+                for (int i = 0; i < line.Length; i++)
+                {
+                    if (line[i] < 0 || line[i] >= xyz.Length / 3)
+                        throw new ArgumentOutOfRangeException(nameof(indices), "item " + k + " names point " + line[i] + ", but there are " + xyz.Length / 3);
+                    Array.Copy(xyz, 3 * line[i], item, 3 * i, 3);
+                }
+                items.Add(item);
+            }
+            return Pack(items, 3);
+        }
+
         /// <summary>Cuts a packed array back into its items.</summary>
         public static double[][] Unpack(Packed packed)
         {

@@ -66,6 +66,12 @@ namespace Lamella.Interop
         protected override bool ReleaseHandle() { NativeMethods.lml_strip_net_free(handle); return true; }
     }
 
+    internal sealed class StripWebHandle : LamellaHandle
+    {
+        public StripWebHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_strip_web_free(handle); return true; }
+    }
+
     internal sealed class ReshapeHandle : LamellaHandle
     {
         public ReshapeHandle() { }

@@ -48,6 +48,23 @@ namespace Lamella.Interop
             return result;
         }
 
+        /// <summary>
+        /// Cuts <paramref name="values"/> (indices, one run after another) into runs of <paramref name="sizes"/> values each:
+        /// the C ABI's layout of faces and polylines of varying length.
+        /// </summary>
+        public static int[][] Runs(uint[] sizes, uint[] values)
+        {
+            var runs = new int[sizes.Length][];
+            int at = 0;
+            for (int i = 0; i < sizes.Length; i++)
+            {
+                runs[i] = new int[checked((int)sizes[i])];
+                for (int j = 0; j < runs[i].Length; j++) runs[i][j] = checked((int)values[at++]);
+            }
+            if (at != values.Length) throw new InvalidOperationException("the runs hold " + at + " values, the library wrote " + values.Length);
+            return runs;
+        }
+
         /// <summary>An array length as <c>size_t</c>.</summary>
         public static UIntPtr Size(int length) => new UIntPtr((uint)length);
     }

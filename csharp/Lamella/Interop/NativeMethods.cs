@@ -91,6 +91,7 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_net_report(NetHandle net, out NetReportRecord report);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_net_field(NetHandle net, uint k, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_net_family_count(NetHandle net, out uint count);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_net_save(NetHandle net, [Out] byte[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)]
@@ -111,6 +112,38 @@ namespace Lamella.Interop
         public static extern Status lml_strip_net_quads(StripNetHandle stripNet, [Out] uint[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_strip_net_nodes(StripNetHandle stripNet, [Out] NodeRecord[] buffer, UIntPtr capacity, out UIntPtr needed);
+
+        // 3-webs: LmlNet sessions of three families, their levels and curves; LmlStripWeb.
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_web_new(MeshHandle mesh, double[] thetas, double[] initialFields, UIntPtr n,
+            double minIntersectionDegrees, double intersectionDegrees, out NetHandle net);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_net_web_report(NetHandle net, out WebReportRecord report);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_web_levels(NetHandle net, UIntPtr countF, UIntPtr countH, uint kagome, uint k,
+            [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_curves_new_from_web(NetHandle net, uint k, UIntPtr countF, UIntPtr countH, uint kagome, double spacing,
+            out CurvesHandle curves);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_web_new(NetHandle net, UIntPtr countF, UIntPtr countH, uint kagome,
+            StripsHandle stripsF, StripsHandle stripsH, StripsHandle stripsG, out StripWebHandle web);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_strip_web_free(IntPtr web);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_web_vertices(StripWebHandle web, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_web_vertex_levels(StripWebHandle web, [Out] long[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_web_face_sizes(StripWebHandle web, [Out] uint[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_web_face_vertices(StripWebHandle web, [Out] uint[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_web_polyline_sizes(StripWebHandle web, uint family, [Out] uint[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_web_polyline_vertices(StripWebHandle web, uint family, [Out] uint[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_web_polyline_levels(StripWebHandle web, uint family, [Out] uint[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_strip_web_nodes(StripWebHandle web, [Out] WebNodeRecord[] buffer, UIntPtr capacity, out UIntPtr needed);
 
         // LmlReshape.
         [DllImport(Library, CallingConvention = Cdecl)]

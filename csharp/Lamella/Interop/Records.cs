@@ -112,6 +112,42 @@ namespace Lamella.Interop
     }
 
     /// <summary>
+    /// <c>LmlWebReport</c>: the state of a 3-web after a step beyond what <see cref="NetReportRecord"/> says of its first
+    /// two families (angles in degrees; index 0 of the pairs: the third family against the first, 1: against the
+    /// second). The binding hands it out as <see cref="WebReport"/>.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct WebReportRecord
+    {
+        public double AngleErrorRmsDegrees;
+        public double AngleErrorMaxDegrees;
+        public ulong SingularVertexCount;
+        public double ResidualMax;
+        public double ResidualRms;
+        public double ThirdFamilyFactor;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public double[] MinIntersectionDegrees;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public double[] MeanIntersectionDegrees;
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public ulong[] FacesBelowMin;
+    }
+
+    /// <summary>
+    /// <c>LmlWebNode</c>: one node of a 3-web gridshell, where a strip of family <c>Families[0]</c> crosses one of
+    /// <c>Families[1]</c> (the smaller first); <c>Node</c>'s per-strip entries follow that order. The binding hands it
+    /// out as <see cref="WebNode"/>.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct WebNodeRecord
+    {
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 2)]
+        public uint[] Families;
+        public uint Reserved;
+        public NodeRecord Node;
+    }
+
+    /// <summary>
     /// <c>LmlReshapeReport</c>: the state of a surface optimisation after a step (lengths in the mesh's units, angles
     /// in degrees). The binding hands it out as <see cref="ReshapeReport"/>.
     /// </summary>
