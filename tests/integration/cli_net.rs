@@ -287,6 +287,32 @@ fn an_aag_web_is_written_as_triangles_with_its_three_families_and_a_kagome_patte
         assert_eq!(pairs.contains(&("f0".into(), "f1".into())), true, "{pairs:?}");
     }
     assert_bad_input(&dir.0, &["net", "--mesh", mesh, "--families", "A,A", "--kagome", "--out", "o"], &["--kagome", "three"]);
-    // optimise takes nets of rows and columns only and says so for a web.
-    assert_bad_input(&dir.0, &["optimise", "--net", "web/net.obj", "--types", "A,A", "--reference", mesh, "--out", "o"], &["diagonals"]);
+    // optimise reads the web back (rows, columns, diagonals) and makes its diagonals geodesic.
+    assert_bad_input(&dir.0, &["optimise", "--net", "web/net.obj", "--types", "A,A", "--reference", mesh, "--out", "o"], &["2 families for a net of 3"]);
+    let output = lamella(&dir.0, &["optimise", "--net", "web/net.obj", "--types", "A,A,G", "--reference", mesh, "--out", "opt", "--quiet"]);
+    assert!(matches!(output.status.code(), Some(0 | 3)), "{}", stderr(&output));
+    let text = std::fs::read_to_string(dir.path("opt/net.obj")).expect("net.obj");
+    let (vertices, faces, _) = obj_elements(&text);
+    assert!(obj_groups(&text).contains_key("diagonals") && !faces.is_empty() && faces.iter().all(|f| f.len() == 3), "{} faces", faces.len());
+    // The diagonals' discrete binormals against the exact normal of z = xy/5: geodesic to 1°.
+    let normal = |p: [f64; 3]| {
+        let n = [-p[1] / 5.0, -p[0] / 5.0, 1.0];
+        let length = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+        n.map(|c| c / length)
+    };
+    let mut worst: f64 = 0.0;
+    for line in &obj_groups(&text)["diagonals"] {
+        for w in line.windows(3) {
+            let [a, b, c] = [w[0], w[1], w[2]].map(|v| vertices[v]);
+            let (e, f) = ([b[0] - a[0], b[1] - a[1], b[2] - a[2]], [c[0] - b[0], c[1] - b[1], c[2] - b[2]]);
+            let binormal = [e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]];
+            let length = (binormal.iter().map(|x| x * x).sum::<f64>()).sqrt();
+            let n = normal(b);
+            let cosine = (binormal[0] * n[0] + binormal[1] * n[1] + binormal[2] * n[2]) / length;
+            worst = worst.max(cosine.abs().min(1.0).asin().to_degrees());
+        }
+    }
+    assert!(worst <= 1.0, "a diagonal's binormal is {worst:.2}° off 90° to the exact normal");
+    let report = read_json(&dir.path("opt/report.json"));
+    assert_eq!(report["families"].as_array().map(Vec::len), Some(3), "{report}");
 }
