@@ -101,12 +101,21 @@ impl Reference {
     }
 
     /// Each family of `net` measured at `targets_degrees` with the reference's `normals` at its
-    /// vertices: pseudo-geodesics, geodesics and asymptotic curves by their binormals
-    /// ([`polyline_family_angles`]), constant slopes by their segments ([`slope_angles`]).
+    /// vertices: pseudo-geodesics and geodesics by their binormals
+    /// ([`polyline_family_angles`]), constant slopes and asymptotic curves by their segments
+    /// ([`segment_angles`]).
     fn families_with(&self, net: &NetMesh, families: &[Family], targets_degrees: &[f64], normals: &[Vec3]) -> Vec<FamilyAngles> {
         (0..families.len())
             .map(|k| match target_family(families[k], targets_degrees[k]) {
-                slope @ Family::ConstantSlope { slope_degrees, .. } => slope_angles(net, k, &slope.slope_axis().unwrap_or_else(Vec3::z), slope_degrees),
+                slope @ Family::ConstantSlope { slope_degrees, .. } => {
+                    let axis = slope.slope_axis().unwrap_or_else(Vec3::z);
+                    let p = net.positions();
+                    segment_angles(net, k, slope_degrees, |a, b| (p[b] - p[a]).normalize().dot(&axis).clamp(-1.0, 1.0).asin().to_degrees())
+                }
+                Family::Asymptotic => segment_angles(net, k, 0.0, |a, b| {
+                    let along = (net.positions()[b] - net.positions()[a]).normalize();
+                    along.dot(&normals[a]).abs().max(along.dot(&normals[b]).abs()).min(1.0).asin().to_degrees()
+                }),
                 family => polyline_family_angles(&Self::curves(net, k, normals), family, self.diagonal),
             })
             .collect()
@@ -143,9 +152,13 @@ pub(crate) fn target_family(family: Family, target_degrees: f64) -> Family {
     }
 }
 
-/// The slope `asin(ê·a)` of every segment of family `k`'s polylines (along their direction)
-/// against `slope_degrees`: one measured value per segment, the worst at its midpoint.
-fn slope_angles(net: &NetMesh, k: usize, axis: &Vec3, slope_degrees: f64) -> FamilyAngles {
+/// Every segment of family `k`'s polylines (along their direction) measured by `measure(a, b)`
+/// (its end vertices) against `target_degrees`: one value per segment, the worst at its midpoint. A
+/// constant-slope family's segments by their slope `asin(ê·a)`; an asymptotic family's by the
+/// larger angle `asin|ê·n|` of the segment to the reference's tangent plane at its two ends (the
+/// discrete condition Sec. 3.5 holds, `n·ê = 0`; a binormal is undefined on the straight
+/// asymptotic lines of a ruled surface).
+fn segment_angles(net: &NetMesh, k: usize, target_degrees: f64, measure: impl Fn(usize, usize) -> f64) -> FamilyAngles {
     let p = net.positions();
     let mut angles = FamilyAngles::default();
     let mut squares = 0.0;
@@ -153,9 +166,9 @@ fn slope_angles(net: &NetMesh, k: usize, axis: &Vec3, slope_degrees: f64) -> Fam
         let mut curve = CurveAngles { length: line.windows(2).map(|w| (p[w[1] as usize] - p[w[0] as usize]).norm()).sum(), ..CurveAngles::default() };
         let mut curve_squares = 0.0;
         for w in line.windows(2) {
+            let measured = measure(w[0] as usize, w[1] as usize);
             let (a, b) = (p[w[0] as usize], p[w[1] as usize]);
-            let measured = (b - a).normalize().dot(axis).clamp(-1.0, 1.0).asin().to_degrees();
-            let error = (measured - slope_degrees).abs();
+            let error = (measured - target_degrees).abs();
             curve.measured += 1;
             curve_squares += error * error;
             curve.max_error_degrees = curve.max_error_degrees.max(error);
