@@ -217,7 +217,9 @@ typedef int32_t LmlStatus;
 
 // A base-mesh optimisation session (opaque): a copy of the reference surface, the net with its
 // auxiliary variables (normals, binormals, rulings) and the solver state. Create it with
-// `lml_base_mesh_new` or `lml_base_mesh_from_strip_net`, release it with `lml_base_mesh_free`.
+// `lml_base_mesh_new`, `lml_base_mesh_new_slopes` or `lml_base_mesh_from_strip_net` (a net of
+// two families), or `lml_base_mesh_new_web` or `lml_base_mesh_from_strip_web` (a 3-web of
+// three), release it with `lml_base_mesh_free`.
 typedef struct LmlBaseMesh LmlBaseMesh;
 
 // Level polylines of a field (opaque), each with its level value, per-point surface normals and
@@ -796,7 +798,8 @@ typedef struct LmlReshapeReport {
 // The state of a base-mesh optimisation (written by the library; the caller owns the struct),
 // measured from outside: each family's angle at the net's own vertices against the reference's
 // smooth normal, the distance of the net from the reference, and the ruling angle at the nodes.
-// Lengths in the net's units, angles in degrees; index 0 is the rows, 1 the columns. Never NaN.
+// Lengths in the net's units, angles in degrees; index 0 is the rows, 1 the columns (a web's
+// diagonals, family 2, are reported by `lml_base_mesh_family_report`). Never NaN.
 typedef struct LmlBaseMeshReport {
   // Iterations run since the session was created.
   uint64_t iterations;
@@ -823,8 +826,8 @@ typedef struct LmlBaseMeshReport {
   uint64_t node_count;
   double node_ruling_angle_max_degrees;
   double node_ruling_angle_rms_degrees;
-  // 1 when every measured vertex of both families is within 1° of its target (and a
-  // pseudo-geodesic family is nowhere straight), else 0.
+  // 1 when every measured vertex of every family (a web's diagonals too) is within 1° of its
+  // target (and a pseudo-geodesic family is nowhere straight), else 0.
   uint64_t families_met;
   // 1 when every measured node's ruling angle is at most 0.5°, else 0.
   uint64_t torsion_free;
@@ -846,6 +849,23 @@ typedef struct LmlBaseMeshNode {
   // Unit node axis: the mean of the two unit rulings.
   double axis[3];
 } LmlBaseMeshNode;
+
+// One family's part of a base-mesh report (written by the library; the caller owns the struct):
+// its angle measured from outside at its polylines' inner vertices against the reference's
+// smooth normal, as `LmlBaseMeshReport` reports the rows and columns. Angles in degrees; never NaN.
+typedef struct LmlBaseMeshFamilyReport {
+  // The family's target angle along its polylines' direction (as `target_degrees` of
+  // `LmlBaseMeshReport`; a slope for a constant-slope family).
+  double target_degrees;
+  // RMS and maximum of |θ_measured − target| over the measured vertices.
+  double angle_error_rms_degrees;
+  double angle_error_max_degrees;
+  // Inner vertices of the family's polylines where the angle was measured, and those where the
+  // polyline is straight (no osculating plane: exact for geodesics and asymptotic curves,
+  // counted among the measured with no error; a miss for pseudo-geodesics).
+  uint64_t measured_vertices;
+  uint64_t straight_vertices;
+} LmlBaseMeshFamilyReport;
 
 // Where the building stands, how the model is oriented and when the shading is for (filled by
 // `lml_shading_site_default`, then edited). Angles in degrees, hours 0–24.
@@ -2477,6 +2497,56 @@ LmlStatus lml_base_mesh_from_strip_net(const struct LmlStripNet *net,
                                        uint32_t torsion_free,
                                        struct LmlBaseMesh **out);
 
+// Starts optimising a 3-web (paper Sec. 3.5 and 4.2: a net of rows, columns and diagonals, such
+// as Table 1's AAG, AGG or PPG webs) so that each of its three families of polylines becomes the
+// asked curves on or near `reference`, with the default weights. Then every polyline carries a
+// developable strip of planar quads (`lml_base_mesh_strips`, k = 0, 1 or 2), and the web's
+// triangles are those of `lml_base_mesh_triangles`. Torsion-free nodes (Eq. 21) are held for
+// nets of two families only: a web has no such option.
+//
+// - `reference`, `xyz`, `vertex_count`, `polyline_vertices`, `polyline_vertex_count`, `out`: as
+//   in `lml_base_mesh_new`.
+// - `polyline_lengths`: `row_count + column_count + diagonal_count` vertex counts (each ≥ 2):
+//   the rows', then the columns', then the diagonals'; they must sum to `polyline_vertex_count`.
+//   A vertex lies on at most one polyline of each family; consecutive vertices of a polyline are
+//   at distinct points. `polyline_vertices` holds the polylines in the same order.
+// - `diagonal_count`: at least 1.
+// - `thetas`: 3 doubles, the families of the rows, the columns and the diagonals by their
+//   angles θ in [0°, 180°], as `theta_degrees_rows` of `lml_base_mesh_new` (e.g. {0, 0, 90}: an
+//   AAG web, its rows and columns asymptotic curves, its diagonals geodesics).
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (as `lml_base_mesh_new`: the message
+// names the argument, vertex or polyline, `thetas[i]` for a θ out of range, `diagonal_count` for
+// none); `LML_STATUS_INTERNAL_ERROR` (the problem could not be set up).
+LmlStatus lml_base_mesh_new_web(const struct LmlMesh *reference,
+                                const double *xyz,
+                                size_t vertex_count,
+                                const uint32_t *polyline_vertices,
+                                size_t polyline_vertex_count,
+                                const uint32_t *polyline_lengths,
+                                size_t row_count,
+                                size_t column_count,
+                                size_t diagonal_count,
+                                const double *thetas,
+                                struct LmlBaseMesh **out);
+
+// Starts optimising the web of a 3-web gridshell (`lml_strip_web_new`) as `lml_base_mesh_new_web`
+// does: its vertices are `lml_strip_web_vertices`, its rows, columns and diagonals the polylines
+// of its families 0, 1 and 2 (`lml_strip_web_polyline_vertices`), in that order. A Kagome
+// pattern's web is taken as it is (every vertex on two of the families; its triangles are the
+// pattern's triangles).
+//
+// - `web`: the strip web (not retained); `reference`: the surface (copied), usually the mesh of
+//   the 3-web session the strip web came from.
+// - `thetas` and `out` as in `lml_base_mesh_new_web`.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, θ out of range, named;
+// a web without a vertex inside a polyline of three or more); `LML_STATUS_INTERNAL_ERROR`.
+LmlStatus lml_base_mesh_from_strip_web(const struct LmlStripWeb *web,
+                                       const struct LmlMesh *reference,
+                                       const double *thetas,
+                                       struct LmlBaseMesh **out);
+
 // Releases a session. NULL is accepted and ignored. The handle must not be used again.
 void lml_base_mesh_free(struct LmlBaseMesh *base_mesh);
 
@@ -2551,21 +2621,46 @@ LmlStatus lml_base_mesh_nodes(const struct LmlBaseMesh *base_mesh,
                               size_t capacity,
                               size_t *needed);
 
-// Builds the rectifying strips of family `k` (0: rows, 1: columns) on the current net: on every
-// polyline, the developable strip of planar quads whose rulings are fitted to the nodes'
-// common rulings (Sec. 5.2.1), cut to `width` (> 0, the net's units) and unrolled, judged with
-// `tolerance_degrees` in (0, 180) against the family's target angle (`target_degrees[k]` of the
-// report) on the reference. The strips are a new `LmlStrips` handle (read it with the
-// `lml_strips_*` functions, release it with `lml_strips_free`); a strip's curve index is its
-// polyline's index within the family. Polylines that carry no strip are listed by
-// `lml_strips_skipped`.
+// Writes the session's number of families to `*count`: 2 for a net of rows and columns, 3 for a
+// web of rows, columns and diagonals.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_base_mesh_family_count(const struct LmlBaseMesh *base_mesh, uint32_t *count);
+
+// Writes family `k`'s part (0: rows, 1: columns, 2: a web's diagonals) of the state after the
+// last step (or after creation) to `*report`: for k = 0 and 1 the same numbers as index k of
+// `lml_base_mesh_report`.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument, `k` not below
+// `lml_base_mesh_family_count`, named).
+LmlStatus lml_base_mesh_family_report(const struct LmlBaseMesh *base_mesh,
+                                      uint32_t k,
+                                      struct LmlBaseMeshFamilyReport *report);
+
+// Copies a web's triangles into `indices`, three vertex indices (into the positions) per
+// triangle, with the two-call pattern (`*needed` receives 3 × the triangle count): the cycles of
+// one segment of each family, `[a, b, c]` with `a → b` a row segment (in a 3-web the halves of
+// the rows' and columns' quads, in a Kagome pattern its triangles). None for a net of two
+// families (`*needed` is 0). Returns as `lml_base_mesh_positions`.
+LmlStatus lml_base_mesh_triangles(const struct LmlBaseMesh *base_mesh,
+                                  uint32_t *indices,
+                                  size_t capacity,
+                                  size_t *needed);
+
+// Builds the rectifying strips of family `k` (0: rows, 1: columns, 2: a web's diagonals) on the
+// current net: on every polyline, the developable strip of planar quads whose rulings are fitted
+// to the nodes' common rulings (Sec. 5.2.1; a web's diagonals, which share no node rulings, to
+// their own), cut to `width` (> 0, the net's units) and unrolled, judged with
+// `tolerance_degrees` in (0, 180) against the family's target angle (`target_degrees` of
+// `lml_base_mesh_family_report`) on the reference. The strips are a new `LmlStrips` handle
+// (read it with the `lml_strips_*` functions, release it with `lml_strips_free`); a strip's
+// curve index is its polyline's index within the family. Polylines that carry no strip are
+// listed by `lml_strips_skipped`.
 //
 // Returns `LML_STATUS_OK` (every strip within the tolerance, no flipped quad);
 // `LML_STATUS_NO_ACCEPTABLE_FAMILY` (the strips are built and `*out` is valid, but some miss the
 // angle by more than the tolerance, have flipped quads or leave the surface, or no strip could
 // be built: `lml_last_error_message()` names the worst strip, `lml_strips_verdict` gives the
-// numbers); `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `k` > 1, `width` or
-// `tolerance_degrees` out of range, named).
+// numbers); `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `k` not below
+// `lml_base_mesh_family_count`, `width` or `tolerance_degrees` out of range, named).
 LmlStatus lml_base_mesh_strips(const struct LmlBaseMesh *base_mesh,
                                uint32_t k,
                                double width,

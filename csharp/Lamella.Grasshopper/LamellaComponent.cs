@@ -143,7 +143,7 @@ namespace Lamella.Grasshopper
         }
 
         /// <summary>The document's absolute tolerance, or 0 (weld identical positions only) when there is none.</summary>
-        private static double WeldTolerance()
+        protected static double WeldTolerance()
         {
             double tolerance = DocumentTolerance();
             return tolerance >= 0 && !double.IsInfinity(tolerance) ? tolerance : 0;

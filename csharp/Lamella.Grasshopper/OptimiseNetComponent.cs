@@ -3,9 +3,7 @@ using System.Collections.Generic;
 using System.Globalization;
 using Grasshopper;
 using Grasshopper.Kernel;
-using Grasshopper.Kernel.Data;
 using Lamella.Conversion;
-using Lamella.Hosting;
 using Rhino.Geometry;
 
 namespace Lamella.Grasshopper
@@ -16,7 +14,7 @@ namespace Lamella.Grasshopper
     /// optionally with torsion-free nodes (Sec. 5.2.1, Eq. 21: the strips of a node's row and column share its ruling);
     /// then every polyline carries a developable strip of planar quads. One-shot: solves when Solve is true (no live mode).
     /// </summary>
-    public class OptimiseNetComponent : LamellaComponent
+    public class OptimiseNetComponent : BaseMeshComponent
     {
         public OptimiseNetComponent()
             : base("Optimise Net", "OptNet",
@@ -94,13 +92,7 @@ namespace Lamella.Grasshopper
                 corners[k] = welded.VertexMap[corners[k]];
             }
             int[][][] polylines = NetPolylines.FromQuads(corners, welded.VertexCount);
-            if (!widthGiven)
-            {
-                width = StripDefaults.Width(welded.Xyz);
-                AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, string.Format(CultureInfo.InvariantCulture,
-                    "Width not set: {0:G6} ({1}; about {2:0.#} % of the net's extent)", width,
-                    RhinoConversion.DocumentUnits() ?? "document units", 100 * StripDefaults.WidthFraction));
-            }
+            width = StripWidth(widthGiven, width, welded.Xyz);
 
             BaseMeshReport report;
             double[] xyz;
@@ -112,29 +104,11 @@ namespace Lamella.Grasshopper
                 ? BaseMeshSolver.ConstantSlopes(reference, welded.Xyz, polylines[0], polylines[1], thetas[0], thetas[1], new[] { axis.X, axis.Y, axis.Z })
                 : new BaseMeshSolver(reference, welded.Xyz, polylines[0], polylines[1], thetas[0], thetas[1], torsionFree))
             {
-                report = solver.Report;
-                while (report.Iterations < maxIterations && !report.IsConverged)
-                {
-                    if (GH_Document.IsEscapeKeyDown()) break;
-                    report = solver.Step((int)Math.Min(10, maxIterations - report.Iterations));
-                }
+                report = SolveBaseMesh(solver, maxIterations);
                 xyz = solver.Positions();
                 nodes = solver.Nodes();
-                for (int k = 0; k < 2; k++)
-                {
-                    using (Strips strips = solver.BuildStrips(k, width))
-                    {
-                        Verdict verdict = strips.Verdict;
-                        string family = k == 0 ? "rows" : "columns";
-                        // Still output: the designer sees where the strips miss θ.
-                        if (!verdict.IsAcceptable) AddRuntimeMessage(GH_RuntimeMessageLevel.Error, family + ": " + verdict.Message);
-                        verdicts.Add(family + ": " + verdict);
-                        meshes.AddRange(RhinoConversion.QuadMeshes(StripArrays.Split(strips.Vertices(), 3, strips.Quads(), strips.VertexOffsets(), strips.QuadOffsets())), new GH_Path(k));
-                    }
-                }
+                BuildFamilyStrips(solver, width, meshes, verdicts);
             }
-            if (!report.IsConverged)
-                AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, string.Format(CultureInfo.InvariantCulture, "not converged after {0} iterations", report.Iterations));
             if (!report.FamiliesMet)
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, string.Format(CultureInfo.InvariantCulture,
                     "the families are not met: rows up to {0:0.##}°, columns up to {1:0.##}° off θ (the library accepts 1°)", report.AngleErrorMaxDegrees[0], report.AngleErrorMaxDegrees[1]));
@@ -142,11 +116,9 @@ namespace Lamella.Grasshopper
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, string.Format(CultureInfo.InvariantCulture,
                     "the nodes are not torsion-free: rulings up to {0:0.##}° apart (the library accepts 0.5°; see Node Angles)", report.NodeRulingAngleMaxDegrees));
 
-            var curves = new DataTree<object>();
             var points = new List<Point3d>(nodes.Length);
             var angles = new List<double>(nodes.Length);
             var axes = new List<Vector3d>(nodes.Length);
-            for (int k = 0; k < 2; k++) curves.AddRange(RhinoConversion.Polylines(Packing.Gather(xyz, polylines[k])), new GH_Path(k));
             foreach (BaseMeshNode node in nodes)
             {
                 points.Add(RhinoConversion.Point(xyz, node.Vertex));
@@ -156,7 +128,7 @@ namespace Lamella.Grasshopper
             Message = string.Format(CultureInfo.InvariantCulture, "θ error {0:0.##}° · nodes {1:0.##}°",
                 Math.Max(report.AngleErrorMaxDegrees[0], report.AngleErrorMaxDegrees[1]), report.NodeRulingAngleMaxDegrees);
             DA.SetData(0, RhinoConversion.QuadMesh(xyz, corners));
-            DA.SetDataTree(1, curves);
+            DA.SetDataTree(1, FamilyPolylines(xyz, polylines));
             DA.SetDataTree(2, meshes);
             DA.SetDataList(3, points);
             DA.SetDataList(4, angles);

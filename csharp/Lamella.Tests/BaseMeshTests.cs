@@ -275,6 +275,36 @@ namespace Lamella.Tests
         }
 
         [Test]
+        public void PolylinesAsPointsWeldIntoAWeb()
+        {
+            // A 3 × 3 grid: rows along x, columns along y, diagonals x + y = const; the points of each polyline copied.
+            Func<int, int, double[]> at = (i, j) => new double[] { i, j, 0.1 * i * j };
+            Func<IEnumerable<double[]>, double[]> line = points => points.SelectMany(p => p).ToArray();
+            var rows = Enumerable.Range(0, 3).Select(j => line(Enumerable.Range(0, 3).Select(i => at(i, j)))).ToArray();
+            var columns = Enumerable.Range(0, 3).Select(i => line(Enumerable.Range(0, 3).Select(j => at(i, j)))).ToArray();
+            var diagonals = Enumerable.Range(1, 3).Select(sum => line(Enumerable.Range(0, 3).Where(i => sum - i >= 0 && sum - i < 3).Select(i => at(i, sum - i)))).ToArray();
+            WeldedNet web = NetPolylines.FromPoints(new[] { rows, columns, diagonals }, 0.0);
+            Assert.AreEqual(9, web.VertexCount);
+            Assert.AreEqual(9 + 9 + 7 - 9, web.WeldedPoints);
+            CollectionAssert.AreEqual(new[] { 0, 1, 2 }, web.Polylines[0][0]);
+            CollectionAssert.AreEqual(new[] { 0, 3, 6 }, web.Polylines[1][0]);
+            CollectionAssert.AreEqual(new[] { 3, 1 }, web.Polylines[2][0]);
+            CollectionAssert.AreEqual(at(2, 1), Vec.At(web.Xyz, web.Polylines[0][1][2]));
+            // Within a tolerance: points moved by less than it weld to the first.
+            double[] moved = (double[])columns[1].Clone();
+            moved[3] += 1e-4;
+            WeldedNet near = NetPolylines.FromPoints(new[] { rows, new[] { columns[0], moved, columns[2] }, diagonals }, 1e-3);
+            Assert.AreEqual(9, near.VertexCount);
+            Assert.AreEqual(10, NetPolylines.FromPoints(new[] { rows, new[] { columns[0], moved, columns[2] }, diagonals }, 0.0).VertexCount);
+            var error = Assert.Throws<ArgumentException>(() => NetPolylines.FromPoints(new[] { rows, columns, diagonals }, 1.5));
+            StringAssert.Contains("rows[0]: points 0 and 1 are within the weld tolerance", error.Message);
+            error = Assert.Throws<ArgumentException>(() => NetPolylines.FromPoints(new[] { rows, columns, new[] { new double[] { 0, 0, 0 } } }, 0.0));
+            StringAssert.Contains("diagonals[0] has 1 points", error.Message);
+            error = Assert.Throws<ArgumentException>(() => NetPolylines.FromPoints(new[] { rows, new[] { new double[] { 0, 0, double.NaN, 1, 1, 1 } } }, 0.0));
+            StringAssert.Contains("columns[0] has a non-finite coordinate", error.Message);
+        }
+
+        [Test]
         public void AStripNetStartsAnOptimisationFromItsQuadNet()
         {
             // The geodesic net of a cylinder's circles and rulings, as in NetTests.

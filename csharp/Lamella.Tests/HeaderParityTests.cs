@@ -44,6 +44,7 @@ namespace Lamella.Tests
             { "LmlReshapeReport", typeof(ReshapeReportRecord) },
             { "LmlBaseMeshReport", typeof(BaseMeshReportRecord) },
             { "LmlBaseMeshNode", typeof(BaseMeshNodeRecord) },
+            { "LmlBaseMeshFamilyReport", typeof(BaseMeshFamilyReportRecord) },
             { "LmlNode", typeof(NodeRecord) },
             { "LmlWebReport", typeof(WebReportRecord) },
             { "LmlWebNode", typeof(WebNodeRecord) },

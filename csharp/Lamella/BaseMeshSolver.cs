@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Globalization;
 using Lamella.Interop;
 
@@ -7,7 +8,8 @@ namespace Lamella
     /// <summary>
     /// The state of a <see cref="BaseMeshSolver"/> (<c>LmlBaseMeshReport</c>), measured from outside: each family's angle
     /// at the net's own vertices against the reference's smooth normal, the distance from the reference, the ruling angle
-    /// at the nodes. Lengths in the net's units, angles in degrees; index 0 is the rows, 1 the columns.
+    /// at the nodes. Lengths in the net's units, angles in degrees; index 0 is the rows, 1 the columns (a web's diagonals:
+    /// <see cref="BaseMeshSolver.FamilyReport"/>(2)).
     /// </summary>
     public sealed class BaseMeshReport
     {
@@ -57,7 +59,7 @@ namespace Lamella
         public double NodeRulingAngleMaxDegrees { get; }
         /// <summary>RMS of the nodes' ruling angles.</summary>
         public double NodeRulingAngleRmsDegrees { get; }
-        /// <summary>True when every measured vertex of both families is within 1° of its target (and no pseudo-geodesic family is straight anywhere).</summary>
+        /// <summary>True when every measured vertex of every family (a web's diagonals too) is within 1° of its target (and no pseudo-geodesic family is straight anywhere).</summary>
         public bool FamiliesMet { get; }
         /// <summary>True when every node's ruling angle is at most 0.5°.</summary>
         public bool IsTorsionFree { get; }
@@ -79,6 +81,45 @@ namespace Lamella
         public override string ToString() =>
             string.Format(CultureInfo.InvariantCulture, "iteration {0}, angle error {1:0.###}° / {2:0.###}°, node ruling angle {3:0.###}°{4}",
                 Iterations, AngleErrorMaxDegrees[0], AngleErrorMaxDegrees[1], NodeRulingAngleMaxDegrees, IsConverged ? ", converged" : "");
+    }
+
+    /// <summary>
+    /// One family's part of a <see cref="BaseMeshReport"/> (<c>LmlBaseMeshFamilyReport</c>, from
+    /// <see cref="BaseMeshSolver.FamilyReport"/>): its angle measured at its polylines' inner vertices against the
+    /// reference's smooth normal. Angles in degrees.
+    /// </summary>
+    public sealed class BaseMeshFamilyReport
+    {
+        internal BaseMeshFamilyReport(int family, BaseMeshFamilyReportRecord r)
+        {
+            Family = family;
+            TargetDegrees = r.TargetDegrees;
+            AngleErrorRmsDegrees = r.AngleErrorRmsDegrees;
+            AngleErrorMaxDegrees = r.AngleErrorMaxDegrees;
+            MeasuredVertices = checked((long)r.MeasuredVertices);
+            StraightVertices = checked((long)r.StraightVertices);
+        }
+
+        /// <summary>The family: 0 the rows, 1 the columns, 2 a web's diagonals.</summary>
+        public int Family { get; }
+        /// <summary>The family's target along its polylines' direction (θ or 180° − θ; a slope for a constant-slope family).</summary>
+        public double TargetDegrees { get; }
+        /// <summary>RMS of |θ_measured − target| over the measured vertices.</summary>
+        public double AngleErrorRmsDegrees { get; }
+        /// <summary>Largest |θ_measured − target|.</summary>
+        public double AngleErrorMaxDegrees { get; }
+        /// <summary>Inner vertices of the family's polylines where the angle was measured (straight ones included for geodesics and asymptotic curves, with no error).</summary>
+        public long MeasuredVertices { get; }
+        /// <summary>Inner vertices where the polyline is straight (a miss for a pseudo-geodesic family).</summary>
+        public long StraightVertices { get; }
+
+        /// <summary>The family's name in texts: "rows", "columns" or "diagonals".</summary>
+        public string Name => BaseMeshSolver.FamilyName(Family);
+
+        /// <inheritdoc />
+        public override string ToString() =>
+            string.Format(CultureInfo.InvariantCulture, "{0}: {1:0.###}° max, {2:0.###}° RMS off {3:0.###}° ({4} vertices)",
+                Name, AngleErrorMaxDegrees, AngleErrorRmsDegrees, TargetDegrees, MeasuredVertices);
     }
 
     /// <summary>
@@ -104,12 +145,12 @@ namespace Lamella
     }
 
     /// <summary>
-    /// Optimises a base mesh for strip structures (paper Sec. 3.5, <c>LmlBaseMesh</c>): a net of rows and columns is moved
-    /// near a reference surface until each family of polylines is the asked curves (θ: 0° and 180° asymptotic curves, 90°
-    /// geodesics, others pseudo-geodesics), optionally with torsion-free nodes (Eq. 21): the strips of a node's row and
-    /// column share its ruling. Then every polyline carries a developable strip of planar quads
-    /// (<see cref="BuildStrips"/>). Stepped like <see cref="FieldSolver"/>; one thread at a time (calls are serialised by
-    /// a lock).
+    /// Optimises a base mesh for strip structures (paper Sec. 3.5, <c>LmlBaseMesh</c>): a net of rows and columns, or a
+    /// 3-web of rows, columns and diagonals (<see cref="Web"/>, <see cref="FromStripWeb"/>), is moved near a reference
+    /// surface until each family of polylines is the asked curves (θ: 0° and 180° asymptotic curves, 90° geodesics, others
+    /// pseudo-geodesics), for a net optionally with torsion-free nodes (Eq. 21): the strips of a node's row and column
+    /// share its ruling. Then every polyline carries a developable strip of planar quads (<see cref="BuildStrips"/>).
+    /// Stepped like <see cref="FieldSolver"/>; one thread at a time (calls are serialised by a lock).
     /// </summary>
     public sealed class BaseMeshSolver : IDisposable
     {
@@ -128,7 +169,7 @@ namespace Lamella
             if (points == null) throw new ArgumentNullException(nameof(points));
             if (points.Length % 3 != 0) throw new ArgumentException("points holds " + points.Length + " values, not a multiple of 3", nameof(points));
             uint[] lengths;
-            uint[] vertices = Concatenate(rows, columns, out lengths);
+            uint[] vertices = Concatenate(new[] { rows, columns }, out lengths);
             Native.Check(NativeMethods.lml_base_mesh_new(reference.Handle, points, Native.Size(points.Length / 3), vertices, Native.Size(vertices.Length),
                 lengths, Native.Size(rows.Length), Native.Size(columns.Length), thetaRowsDegrees, thetaColumnsDegrees, torsionFree ? 1u : 0u, out handle));
         }
@@ -167,11 +208,51 @@ namespace Lamella
             if (points.Length % 3 != 0) throw new ArgumentException("points holds " + points.Length + " values, not a multiple of 3", nameof(points));
             if (axis.Length != 3) throw new ArgumentException("axis holds " + axis.Length + " values, not 3", nameof(axis));
             uint[] lengths;
-            uint[] vertices = Concatenate(rows, columns, out lengths);
+            uint[] vertices = Concatenate(new[] { rows, columns }, out lengths);
             BaseMeshHandle handle;
             Native.Check(NativeMethods.lml_base_mesh_new_slopes(reference.Handle, points, Native.Size(points.Length / 3), vertices,
                 Native.Size(vertices.Length), lengths, Native.Size(rows.Length), Native.Size(columns.Length), slopeRowsDegrees, slopeColumnsDegrees,
                 axis, out handle));
+            return new BaseMeshSolver(handle);
+        }
+
+        /// <summary>
+        /// Starts from a 3-web (paper Sec. 3.5 on Sec. 4.2's webs, <c>lml_base_mesh_new_web</c>) given as
+        /// <paramref name="points"/> (x, y, z per vertex) and its polylines, as in the constructor with the diagonals, the
+        /// third family, after the columns (a vertex on at most one polyline of each family). Each family by its angle θ
+        /// in [0°, 180°]: (0, 0, 90) asks for an AAG web, its rows and columns asymptotic, its diagonals geodesic. A web
+        /// has no torsion-free option. The web's triangles are <see cref="Triangles"/>.
+        /// </summary>
+        /// <exception cref="LamellaException">θ out of range (named <c>thetas[i]</c>), no diagonal, a non-finite point, a polyline referring to a vertex out of range or of fewer than two vertices, a vertex on two polylines of one family (named).</exception>
+        public static BaseMeshSolver Web(LamellaMesh reference, double[] points, int[][] rows, int[][] columns, int[][] diagonals,
+            double thetaRowsDegrees, double thetaColumnsDegrees, double thetaDiagonalsDegrees)
+        {
+            if (reference == null) throw new ArgumentNullException(nameof(reference));
+            if (points == null) throw new ArgumentNullException(nameof(points));
+            if (points.Length % 3 != 0) throw new ArgumentException("points holds " + points.Length + " values, not a multiple of 3", nameof(points));
+            uint[] lengths;
+            uint[] vertices = Concatenate(new[] { rows, columns, diagonals }, out lengths);
+            BaseMeshHandle handle;
+            Native.Check(NativeMethods.lml_base_mesh_new_web(reference.Handle, points, Native.Size(points.Length / 3), vertices,
+                Native.Size(vertices.Length), lengths, Native.Size(rows.Length), Native.Size(columns.Length), Native.Size(diagonals.Length),
+                new[] { thetaRowsDegrees, thetaColumnsDegrees, thetaDiagonalsDegrees }, out handle));
+            return new BaseMeshSolver(handle);
+        }
+
+        /// <summary>
+        /// Starts from the web of a 3-web gridshell (<c>lml_base_mesh_from_strip_web</c>): its vertices are
+        /// <see cref="StripWeb.Vertices"/>, its rows, columns and diagonals <see cref="StripWeb.Polylines"/> of families 0, 1
+        /// and 2, near <paramref name="reference"/> (usually the mesh the 3-web was solved on); θ as in <see cref="Web"/>.
+        /// </summary>
+        /// <exception cref="LamellaException">θ out of range (named), or a web with no polyline of three or more vertices.</exception>
+        public static BaseMeshSolver FromStripWeb(StripWeb web, LamellaMesh reference, double thetaRowsDegrees, double thetaColumnsDegrees,
+            double thetaDiagonalsDegrees)
+        {
+            if (web == null) throw new ArgumentNullException(nameof(web));
+            if (reference == null) throw new ArgumentNullException(nameof(reference));
+            BaseMeshHandle handle;
+            Native.Check(NativeMethods.lml_base_mesh_from_strip_web(web.Handle, reference.Handle,
+                new[] { thetaRowsDegrees, thetaColumnsDegrees, thetaDiagonalsDegrees }, out handle));
             return new BaseMeshSolver(handle);
         }
 
@@ -200,38 +281,69 @@ namespace Lamella
             }
         }
 
-        /// <summary>The rows' then the columns' vertex indices one after another, and their lengths.</summary>
-        private static uint[] Concatenate(int[][] rows, int[][] columns, out uint[] lengths)
+        /// <summary>The polylines of each family (rows, columns, diagonals) one after another as vertex indices, and their lengths.</summary>
+        private static uint[] Concatenate(int[][][] families, out uint[] lengths)
         {
-            if (rows == null) throw new ArgumentNullException(nameof(rows));
-            if (columns == null) throw new ArgumentNullException(nameof(columns));
-            var polylines = new int[rows.Length + columns.Length][];
-            rows.CopyTo(polylines, 0);
-            columns.CopyTo(polylines, rows.Length);
-            lengths = new uint[polylines.Length];
-            long total = 0;
-            for (int l = 0; l < polylines.Length; l++)
+            var polylines = new List<int[]>();
+            var names = new List<string>();
+            for (int k = 0; k < families.Length; k++)
             {
-                if (polylines[l] == null) throw new ArgumentNullException(Name(l, rows.Length), "a polyline is null");
+                if (families[k] == null) throw new ArgumentNullException(FamilyName(k));
+                for (int l = 0; l < families[k].Length; l++)
+                {
+                    string name = FamilyName(k) + "[" + l + "]";
+                    if (families[k][l] == null) throw new ArgumentNullException(name, "a polyline is null");
+                    polylines.Add(families[k][l]);
+                    names.Add(name);
+                }
+            }
+            lengths = new uint[polylines.Count];
+            long total = 0;
+            for (int l = 0; l < polylines.Count; l++)
+            {
                 lengths[l] = (uint)polylines[l].Length;
                 total += polylines[l].Length;
             }
             var vertices = new uint[checked((int)total)];
             int at = 0;
-            for (int l = 0; l < polylines.Length; l++)
+            for (int l = 0; l < polylines.Count; l++)
             {
                 foreach (int v in polylines[l])
                 {
-                    if (v < 0) throw new ArgumentOutOfRangeException(Name(l, rows.Length), "vertex index " + v + " is negative");
+                    if (v < 0) throw new ArgumentOutOfRangeException(names[l], "vertex index " + v + " is negative");
                     vertices[at++] = (uint)v;
                 }
             }
             return vertices;
         }
 
-        /// <summary>"rows[i]" or "columns[j]" for the <paramref name="l"/>-th polyline.</summary>
-        private static string Name(int l, int rowCount) =>
-            l < rowCount ? "rows[" + l + "]" : "columns[" + (l - rowCount) + "]";
+        /// <summary>"rows", "columns" or "diagonals": family <paramref name="k"/>'s polylines by name.</summary>
+        public static string FamilyName(int k) => k == 0 ? "rows" : k == 1 ? "columns" : "diagonals";
+
+        /// <summary>2 for a net of rows and columns, 3 for a web of rows, columns and diagonals.</summary>
+        public int FamilyCount
+        {
+            get
+            {
+                lock (gate)
+                {
+                    uint count;
+                    Native.Check(NativeMethods.lml_base_mesh_family_count(handle, out count));
+                    return checked((int)count);
+                }
+            }
+        }
+
+        /// <summary>Throws unless <paramref name="k"/> is one of the session's families.</summary>
+        private void CheckFamily(int k)
+        {
+            int count = FamilyCount;
+            if (k < 0 || k >= count)
+            {
+                throw new ArgumentOutOfRangeException(nameof(k), k, count == 2 ? "a net has families 0 (rows) and 1 (columns)"
+                    : "a web has families 0 (rows), 1 (columns) and 2 (diagonals)");
+            }
+        }
 
         /// <summary>Runs at most <paramref name="maxIterations"/> iterations; returns the state (converged or not).</summary>
         public BaseMeshReport Step(int maxIterations)
@@ -273,6 +385,35 @@ namespace Lamella
             }
         }
 
+        /// <summary>
+        /// Family <paramref name="k"/>'s part (0: rows, 1: columns, 2: a web's diagonals) of the state after the last step (or
+        /// after creation); for 0 and 1 the numbers at that index of <see cref="Report"/>.
+        /// </summary>
+        public BaseMeshFamilyReport FamilyReport(int k)
+        {
+            CheckFamily(k);
+            lock (gate)
+            {
+                BaseMeshFamilyReportRecord record;
+                Native.Check(NativeMethods.lml_base_mesh_family_report(handle, (uint)k, out record));
+                return new BaseMeshFamilyReport(k, record);
+            }
+        }
+
+        /// <summary>
+        /// A web's triangles, three vertex indices (into <see cref="Positions"/>) each, one after another: the cycles of one
+        /// segment of each family (in a 3-web the halves of the rows' and columns' quads, in a Kagome pattern its
+        /// triangles). Empty for a net of rows and columns.
+        /// </summary>
+        public int[] Triangles()
+        {
+            lock (gate)
+            {
+                return Array.ConvertAll(Native.Read((uint[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_base_mesh_triangles(handle, b, c, out n)),
+                    i => checked((int)i));
+            }
+        }
+
         /// <summary>The current vertex positions, x, y, z per vertex, in the order they were given.</summary>
         public double[] Positions()
         {
@@ -293,15 +434,16 @@ namespace Lamella
         }
 
         /// <summary>
-        /// The rectifying strips of family <paramref name="k"/> (0: rows, 1: columns) on the current net: on every polyline
-        /// the developable strip of planar quads fitted to the nodes' common rulings, <paramref name="width"/> wide, judged
-        /// with <paramref name="toleranceDegrees"/> against the family's target (<see cref="Strips.Verdict"/>;
-        /// a strip's curve index is its polyline's index within the family).
+        /// The rectifying strips of family <paramref name="k"/> (0: rows, 1: columns, 2: a web's diagonals) on the current
+        /// net: on every polyline the developable strip of planar quads fitted to the nodes' common rulings (a web's
+        /// diagonals to their own), <paramref name="width"/> wide, judged with <paramref name="toleranceDegrees"/> against the
+        /// family's target (<see cref="Strips.Verdict"/>; a strip's curve index is its polyline's index within the family).
         /// </summary>
+        /// <exception cref="ArgumentOutOfRangeException"><paramref name="k"/> is not one of the session's <see cref="FamilyCount"/> families.</exception>
         /// <exception cref="LamellaException">Width or tolerance out of range (named).</exception>
         public Strips BuildStrips(int k, double width, double toleranceDegrees = 2.0)
         {
-            if (k < 0 || k > 1) throw new ArgumentOutOfRangeException(nameof(k), "a net has families 0 (rows) and 1 (columns)");
+            CheckFamily(k);
             lock (gate)
             {
                 StripsHandle strips;

@@ -49,6 +49,8 @@ namespace Lamella
             handle = created;
         }
 
+        internal StripWebHandle Handle => handle;
+
         /// <summary>The web's vertices as x, y, z triples: crossings of the families' levels, ordered by their levels of F, then of H.</summary>
         public double[] Vertices() =>
             Native.Read((double[] b, UIntPtr c, out UIntPtr n) => NativeMethods.lml_strip_web_vertices(handle, b, c, out n));

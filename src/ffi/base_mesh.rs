@@ -1,7 +1,9 @@
 //! `LmlBaseMesh`: a base-mesh optimisation session (paper Sec. 3.5, with the torsion-free nodes
 //! of Sec. 5.2.1, Eq. 21), stepped like `LmlField`: create from a net of rows and columns near a
-//! reference surface (given, or the quad net of an `LmlStripNet`), step until converged, read
-//! the positions, the nodes' ruling angles and each family's strips, save and load, free.
+//! reference surface (given, or the quad net of an `LmlStripNet`), or from a 3-web of rows,
+//! columns and diagonals (given, or the web of an `LmlStripWeb`), step until converged, read
+//! the positions, the nodes' ruling angles, each family's report and strips and a web's
+//! triangles, save and load, free.
 
 use super::failure::Failure;
 use super::guard::guarded;
@@ -12,6 +14,7 @@ use super::net::family;
 use super::raw::{copy_out, element_count, handle, handle_mut, input, release, Out};
 use super::status::LmlStatus;
 use super::strip_net::LmlStripNet;
+use super::strip_web::LmlStripWeb;
 use super::strips::LmlStrips;
 use crate::base_mesh::{BaseMeshError, BaseMeshParams, BaseMeshReport, BaseMeshSolver, NetMesh, NodeRuling};
 use crate::field::{Family, FieldError};
@@ -19,7 +22,9 @@ use crate::mesh::{TriMesh, Vec3};
 
 /// A base-mesh optimisation session (opaque): a copy of the reference surface, the net with its
 /// auxiliary variables (normals, binormals, rulings) and the solver state. Create it with
-/// `lml_base_mesh_new` or `lml_base_mesh_from_strip_net`, release it with `lml_base_mesh_free`.
+/// `lml_base_mesh_new`, `lml_base_mesh_new_slopes` or `lml_base_mesh_from_strip_net` (a net of
+/// two families), or `lml_base_mesh_new_web` or `lml_base_mesh_from_strip_web` (a 3-web of
+/// three), release it with `lml_base_mesh_free`.
 pub struct LmlBaseMesh {
     solver: BaseMeshSolver,
 }
@@ -27,7 +32,8 @@ pub struct LmlBaseMesh {
 /// The state of a base-mesh optimisation (written by the library; the caller owns the struct),
 /// measured from outside: each family's angle at the net's own vertices against the reference's
 /// smooth normal, the distance of the net from the reference, and the ruling angle at the nodes.
-/// Lengths in the net's units, angles in degrees; index 0 is the rows, 1 the columns. Never NaN.
+/// Lengths in the net's units, angles in degrees; index 0 is the rows, 1 the columns (a web's
+/// diagonals, family 2, are reported by `lml_base_mesh_family_report`). Never NaN.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LmlBaseMeshReport {
@@ -56,8 +62,8 @@ pub struct LmlBaseMeshReport {
     pub node_count: u64,
     pub node_ruling_angle_max_degrees: f64,
     pub node_ruling_angle_rms_degrees: f64,
-    /// 1 when every measured vertex of both families is within 1° of its target (and a
-    /// pseudo-geodesic family is nowhere straight), else 0.
+    /// 1 when every measured vertex of every family (a web's diagonals too) is within 1° of its
+    /// target (and a pseudo-geodesic family is nowhere straight), else 0.
     pub families_met: u64,
     /// 1 when every measured node's ruling angle is at most 0.5°, else 0.
     pub torsion_free: u64,
@@ -66,17 +72,51 @@ pub struct LmlBaseMeshReport {
     pub energy: f64,
 }
 
+/// One family's part of a base-mesh report (written by the library; the caller owns the struct):
+/// its angle measured from outside at its polylines' inner vertices against the reference's
+/// smooth normal, as `LmlBaseMeshReport` reports the rows and columns. Angles in degrees; never NaN.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LmlBaseMeshFamilyReport {
+    /// The family's target angle along its polylines' direction (as `target_degrees` of
+    /// `LmlBaseMeshReport`; a slope for a constant-slope family).
+    pub target_degrees: f64,
+    /// RMS and maximum of |θ_measured − target| over the measured vertices.
+    pub angle_error_rms_degrees: f64,
+    pub angle_error_max_degrees: f64,
+    /// Inner vertices of the family's polylines where the angle was measured, and those where the
+    /// polyline is straight (no osculating plane: exact for geodesics and asymptotic curves,
+    /// counted among the measured with no error; a miss for pseudo-geodesics).
+    pub measured_vertices: u64,
+    pub straight_vertices: u64,
+}
+
+impl LmlBaseMeshFamilyReport {
+    /// Family `k` (below the report's family count) of `r`.
+    fn of(r: &BaseMeshReport, k: usize) -> LmlBaseMeshFamilyReport {
+        let family = &r.families[k];
+        LmlBaseMeshFamilyReport {
+            target_degrees: r.targets_degrees[k],
+            angle_error_rms_degrees: family.rms_error_degrees,
+            angle_error_max_degrees: family.max_error_degrees,
+            measured_vertices: family.measured as u64,
+            straight_vertices: family.straight as u64,
+        }
+    }
+}
+
 impl From<&BaseMeshReport> for LmlBaseMeshReport {
     fn from(r: &BaseMeshReport) -> LmlBaseMeshReport {
         let count = |n: usize| n as u64;
+        let families = [0, 1].map(|k| LmlBaseMeshFamilyReport::of(r, k));
         LmlBaseMeshReport {
             iterations: count(r.iterations),
             converged: u64::from(r.converged),
-            target_degrees: [0, 1].map(|k| r.targets_degrees[k]),
-            angle_error_rms_degrees: [0, 1].map(|k| r.families[k].rms_error_degrees),
-            angle_error_max_degrees: [0, 1].map(|k| r.families[k].max_error_degrees),
-            measured_vertices: [0, 1].map(|k| count(r.families[k].measured)),
-            straight_vertices: [0, 1].map(|k| count(r.families[k].straight)),
+            target_degrees: families.map(|f| f.target_degrees),
+            angle_error_rms_degrees: families.map(|f| f.angle_error_rms_degrees),
+            angle_error_max_degrees: families.map(|f| f.angle_error_max_degrees),
+            measured_vertices: families.map(|f| f.measured_vertices),
+            straight_vertices: families.map(|f| f.straight_vertices),
             max_deviation: r.deviation.max,
             rms_deviation: r.deviation.rms,
             max_deviation_percent: r.deviation.max_percent,
@@ -129,30 +169,58 @@ impl From<BaseMeshError> for Failure {
     }
 }
 
-/// A session optimising `net` near `reference` with the default weights.
-fn session(net: &NetMesh, reference: &TriMesh, theta_degrees_rows: f64, theta_degrees_columns: f64, torsion_free: u32) -> Result<LmlBaseMesh, Failure> {
-    let mut params = BaseMeshParams::new(family(theta_degrees_rows, "theta_degrees_rows")?, family(theta_degrees_columns, "theta_degrees_columns")?);
+/// A session optimising `net` near `reference` with the default weights, its families (two for a
+/// net, three for a web) by their angles θ, each given with its argument's name.
+fn session(net: &NetMesh, reference: &TriMesh, thetas: &[(&str, f64)], torsion_free: u32) -> Result<LmlBaseMesh, Failure> {
+    let families = thetas.iter().map(|&(name, theta)| family(theta, name)).collect::<Result<Vec<Family>, Failure>>()?;
+    let mut params = match families[..] {
+        [rows, columns] => BaseMeshParams::new(rows, columns),
+        [rows, columns, diagonals] => BaseMeshParams::web(rows, columns, diagonals),
+        _ => unreachable!("a net has two families and a web three"),
+    };
     params.torsion_free = torsion_free != 0;
     Ok(LmlBaseMesh { solver: BaseMeshSolver::new(net, reference, params)? })
 }
 
-/// The net of `lml_base_mesh_new`'s arrays (their contracts as documented there).
+/// The two families of a net by their angles θ, named as `lml_base_mesh_new`'s arguments.
+fn net_thetas(theta_degrees_rows: f64, theta_degrees_columns: f64) -> [(&'static str, f64); 2] {
+    [("theta_degrees_rows", theta_degrees_rows), ("theta_degrees_columns", theta_degrees_columns)]
+}
+
+/// The polyline counts of a net's two families, named as `lml_base_mesh_new`'s arguments.
+fn net_counts(row_count: usize, column_count: usize) -> [(usize, &'static str); 2] {
+    [(row_count, "row_count"), (column_count, "column_count")]
+}
+
+/// The three families of a web by their angles θ: `thetas[0]` to `thetas[2]`, as `lml_web_new`.
+///
+/// # Safety
+/// `thetas` NULL (refused) or readable for 3 doubles.
+unsafe fn web_thetas(thetas: *const f64) -> Result<[(&'static str, f64); 3], Failure> {
+    // SAFETY: the caller's contract.
+    let t = unsafe { input(thetas, 3, "thetas") }?;
+    Ok([("thetas[0]", t[0]), ("thetas[1]", t[1]), ("thetas[2]", t[2])])
+}
+
+/// The net of `lml_base_mesh_new`'s arrays, or of `lml_base_mesh_new_web`'s (their contracts as
+/// documented there): `counts` holds the polyline count of each family (two or three) with its
+/// argument's name.
 ///
 /// # Safety
 /// `xyz` readable for `3 vertex_count` doubles, `polyline_vertices` for `polyline_vertex_count`
-/// and `polyline_lengths` for `row_count + column_count` values (or NULL, refused).
+/// and `polyline_lengths` for the sum of `counts` values (or NULL, refused).
 unsafe fn net_from_arrays(
     xyz: *const f64,
     vertex_count: usize,
     polyline_vertices: *const u32,
     polyline_vertex_count: usize,
     polyline_lengths: *const u32,
-    row_count: usize,
-    column_count: usize,
+    counts: &[(usize, &str)],
 ) -> Result<NetMesh, Failure> {
     // SAFETY (all blocks): the caller's contract.
     let xyz = unsafe { input(xyz, element_count(vertex_count, 3, "vertex_count")?, "xyz") }?;
-    let polyline_count = row_count.checked_add(column_count).ok_or_else(|| Failure::argument("column_count", "row_count + column_count is too large"))?;
+    let sum = counts.iter().map(|&(_, name)| name).collect::<Vec<_>>().join(" + ");
+    let polyline_count = counts.iter().try_fold(0usize, |total, &(count, name)| total.checked_add(count).ok_or_else(|| Failure::argument(name, format!("{sum} is too large"))))?;
     let lengths = unsafe { input(polyline_lengths, polyline_count, "polyline_lengths") }?;
     let vertices = unsafe { input(polyline_vertices, polyline_vertex_count, "polyline_vertices") }?;
     let total = lengths.iter().try_fold(0usize, |total, &length| total.checked_add(length as usize));
@@ -161,17 +229,18 @@ unsafe fn net_from_arrays(
         return Err(Failure::argument("polyline_lengths", format!("the {polyline_count} lengths {sum}, not polyline_vertex_count = {polyline_vertex_count}")));
     }
     let mut rest = vertices;
-    let mut polylines: Vec<Vec<u32>> = lengths
-        .iter()
-        .map(|&length| {
-            let (line, tail) = rest.split_at(length as usize);
-            rest = tail;
-            line.to_vec()
-        })
-        .collect();
-    let columns = polylines.split_off(row_count);
+    let mut polylines = lengths.iter().map(|&length| {
+        let (line, tail) = rest.split_at(length as usize);
+        rest = tail;
+        line.to_vec()
+    });
+    let mut families = counts.iter().map(|&(count, _)| polylines.by_ref().take(count).collect::<Vec<Vec<u32>>>());
+    let (rows, columns) = (families.next().unwrap_or_default(), families.next().unwrap_or_default());
     let positions = xyz.chunks_exact(3).map(|p| Vec3::new(p[0], p[1], p[2])).collect();
-    Ok(NetMesh::new(positions, polylines, columns)?)
+    Ok(match families.next() {
+        Some(diagonals) => NetMesh::web(positions, rows, columns, diagonals)?,
+        None => NetMesh::new(positions, rows, columns)?,
+    })
 }
 
 /// Starts optimising a net of rows and columns (paper Sec. 3.5) so that each family of polylines
@@ -221,8 +290,8 @@ pub unsafe extern "C" fn lml_base_mesh_new(
         let mut out = unsafe { Out::new(out, "out") }?;
         out.set(std::ptr::null_mut());
         let reference = unsafe { handle(reference, "reference") }?;
-        let net = unsafe { net_from_arrays(xyz, vertex_count, polyline_vertices, polyline_vertex_count, polyline_lengths, row_count, column_count) }?;
-        out.set_owned(session(&net, &reference.mesh, theta_degrees_rows, theta_degrees_columns, torsion_free)?);
+        let net = unsafe { net_from_arrays(xyz, vertex_count, polyline_vertices, polyline_vertex_count, polyline_lengths, &net_counts(row_count, column_count)) }?;
+        out.set_owned(session(&net, &reference.mesh, &net_thetas(theta_degrees_rows, theta_degrees_columns), torsion_free)?);
         Ok(LmlStatus::Ok)
     })
 }
@@ -273,7 +342,7 @@ pub unsafe extern "C" fn lml_base_mesh_new_slopes(
             Ok(Family::ConstantSlope { axis: [axis[0], axis[1], axis[2]], slope_degrees: degrees, free_slope: false })
         };
         let params = BaseMeshParams::new(slope(slope_degrees_rows, "slope_degrees_rows")?, slope(slope_degrees_columns, "slope_degrees_columns")?);
-        let net = unsafe { net_from_arrays(xyz, vertex_count, polyline_vertices, polyline_vertex_count, polyline_lengths, row_count, column_count) }?;
+        let net = unsafe { net_from_arrays(xyz, vertex_count, polyline_vertices, polyline_vertex_count, polyline_lengths, &net_counts(row_count, column_count)) }?;
         out.set_owned(LmlBaseMesh { solver: BaseMeshSolver::new(&net, &reference.mesh, params)? });
         Ok(LmlStatus::Ok)
     })
@@ -304,7 +373,84 @@ pub unsafe extern "C" fn lml_base_mesh_from_strip_net(
         out.set(std::ptr::null_mut());
         let net = NetMesh::from_quad_net(unsafe { handle(net, "net") }?.quad_net())?;
         let reference = unsafe { handle(reference, "reference") }?;
-        out.set_owned(session(&net, &reference.mesh, theta_degrees_rows, theta_degrees_columns, torsion_free)?);
+        out.set_owned(session(&net, &reference.mesh, &net_thetas(theta_degrees_rows, theta_degrees_columns), torsion_free)?);
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// Starts optimising a 3-web (paper Sec. 3.5 and 4.2: a net of rows, columns and diagonals, such
+/// as Table 1's AAG, AGG or PPG webs) so that each of its three families of polylines becomes the
+/// asked curves on or near `reference`, with the default weights. Then every polyline carries a
+/// developable strip of planar quads (`lml_base_mesh_strips`, k = 0, 1 or 2), and the web's
+/// triangles are those of `lml_base_mesh_triangles`. Torsion-free nodes (Eq. 21) are held for
+/// nets of two families only: a web has no such option.
+///
+/// - `reference`, `xyz`, `vertex_count`, `polyline_vertices`, `polyline_vertex_count`, `out`: as
+///   in `lml_base_mesh_new`.
+/// - `polyline_lengths`: `row_count + column_count + diagonal_count` vertex counts (each ≥ 2):
+///   the rows', then the columns', then the diagonals'; they must sum to `polyline_vertex_count`.
+///   A vertex lies on at most one polyline of each family; consecutive vertices of a polyline are
+///   at distinct points. `polyline_vertices` holds the polylines in the same order.
+/// - `diagonal_count`: at least 1.
+/// - `thetas`: 3 doubles, the families of the rows, the columns and the diagonals by their
+///   angles θ in [0°, 180°], as `theta_degrees_rows` of `lml_base_mesh_new` (e.g. {0, 0, 90}: an
+///   AAG web, its rows and columns asymptotic curves, its diagonals geodesics).
+///
+/// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (as `lml_base_mesh_new`: the message
+/// names the argument, vertex or polyline, `thetas[i]` for a θ out of range, `diagonal_count` for
+/// none); `LML_STATUS_INTERNAL_ERROR` (the problem could not be set up).
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_new_web(
+    reference: *const LmlMesh,
+    xyz: *const f64,
+    vertex_count: usize,
+    polyline_vertices: *const u32,
+    polyline_vertex_count: usize,
+    polyline_lengths: *const u32,
+    row_count: usize,
+    column_count: usize,
+    diagonal_count: usize,
+    thetas: *const f64,
+    out: *mut *mut LmlBaseMesh,
+) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (all blocks): the pointer contracts are those documented above.
+        let mut out = unsafe { Out::new(out, "out") }?;
+        out.set(std::ptr::null_mut());
+        let reference = unsafe { handle(reference, "reference") }?;
+        let thetas = unsafe { web_thetas(thetas) }?;
+        if diagonal_count == 0 {
+            return Err(Failure::argument("diagonal_count", "is 0: a web has diagonals (lml_base_mesh_new optimises a net of rows and columns)"));
+        }
+        let counts = [(row_count, "row_count"), (column_count, "column_count"), (diagonal_count, "diagonal_count")];
+        let net = unsafe { net_from_arrays(xyz, vertex_count, polyline_vertices, polyline_vertex_count, polyline_lengths, &counts) }?;
+        out.set_owned(session(&net, &reference.mesh, &thetas, 0)?);
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// Starts optimising the web of a 3-web gridshell (`lml_strip_web_new`) as `lml_base_mesh_new_web`
+/// does: its vertices are `lml_strip_web_vertices`, its rows, columns and diagonals the polylines
+/// of its families 0, 1 and 2 (`lml_strip_web_polyline_vertices`), in that order. A Kagome
+/// pattern's web is taken as it is (every vertex on two of the families; its triangles are the
+/// pattern's triangles).
+///
+/// - `web`: the strip web (not retained); `reference`: the surface (copied), usually the mesh of
+///   the 3-web session the strip web came from.
+/// - `thetas` and `out` as in `lml_base_mesh_new_web`.
+///
+/// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, θ out of range, named;
+/// a web without a vertex inside a polyline of three or more); `LML_STATUS_INTERNAL_ERROR`.
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_from_strip_web(web: *const LmlStripWeb, reference: *const LmlMesh, thetas: *const f64, out: *mut *mut LmlBaseMesh) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (all blocks): writable `out`; live handles; `thetas` readable for 3 doubles.
+        let mut out = unsafe { Out::new(out, "out") }?;
+        out.set(std::ptr::null_mut());
+        let net = NetMesh::from_web(unsafe { handle(web, "web") }?.web())?;
+        let reference = unsafe { handle(reference, "reference") }?;
+        let thetas = unsafe { web_thetas(thetas) }?;
+        out.set_owned(session(&net, &reference.mesh, &thetas, 0)?);
         Ok(LmlStatus::Ok)
     })
 }
@@ -439,21 +585,78 @@ pub unsafe extern "C" fn lml_base_mesh_nodes(base_mesh: *const LmlBaseMesh, node
     })
 }
 
-/// Builds the rectifying strips of family `k` (0: rows, 1: columns) on the current net: on every
-/// polyline, the developable strip of planar quads whose rulings are fitted to the nodes'
-/// common rulings (Sec. 5.2.1), cut to `width` (> 0, the net's units) and unrolled, judged with
-/// `tolerance_degrees` in (0, 180) against the family's target angle (`target_degrees[k]` of the
-/// report) on the reference. The strips are a new `LmlStrips` handle (read it with the
-/// `lml_strips_*` functions, release it with `lml_strips_free`); a strip's curve index is its
-/// polyline's index within the family. Polylines that carry no strip are listed by
-/// `lml_strips_skipped`.
+/// `k` as the index of one of the session's families, or the failure naming `k`.
+fn family_index(base_mesh: &LmlBaseMesh, k: u32) -> Result<usize, Failure> {
+    match base_mesh.solver.params().families.len() {
+        count if (k as usize) < count => Ok(k as usize),
+        2 => Err(Failure::argument("k", format!("a net has families 0 (rows) and 1 (columns), got {k}"))),
+        _ => Err(Failure::argument("k", format!("a web has families 0 (rows), 1 (columns) and 2 (diagonals), got {k}"))),
+    }
+}
+
+/// Writes the session's number of families to `*count`: 2 for a net of rows and columns, 3 for a
+/// web of rows, columns and diagonals.
+/// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_family_count(base_mesh: *const LmlBaseMesh, count: *mut u32) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle; writable `count`.
+        let base_mesh = unsafe { handle(base_mesh, "base_mesh") }?;
+        // Two or three families.
+        unsafe { Out::new(count, "count") }?.set(base_mesh.solver.params().families.len() as u32);
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// Writes family `k`'s part (0: rows, 1: columns, 2: a web's diagonals) of the state after the
+/// last step (or after creation) to `*report`: for k = 0 and 1 the same numbers as index k of
+/// `lml_base_mesh_report`.
+/// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument, `k` not below
+/// `lml_base_mesh_family_count`, named).
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_family_report(base_mesh: *const LmlBaseMesh, k: u32, report: *mut LmlBaseMeshFamilyReport) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle; writable `report`.
+        let base_mesh = unsafe { handle(base_mesh, "base_mesh") }?;
+        let mut report = unsafe { Out::new(report, "report") }?;
+        let k = family_index(base_mesh, k)?;
+        report.set(LmlBaseMeshFamilyReport::of(base_mesh.solver.report(), k));
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// Copies a web's triangles into `indices`, three vertex indices (into the positions) per
+/// triangle, with the two-call pattern (`*needed` receives 3 × the triangle count): the cycles of
+/// one segment of each family, `[a, b, c]` with `a → b` a row segment (in a 3-web the halves of
+/// the rows' and columns' quads, in a Kagome pattern its triangles). None for a net of two
+/// families (`*needed` is 0). Returns as `lml_base_mesh_positions`.
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_triangles(base_mesh: *const LmlBaseMesh, indices: *mut u32, capacity: usize, needed: *mut usize) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle; `indices` writable for `capacity` values; `needed` writable.
+        let base_mesh = unsafe { handle(base_mesh, "base_mesh") }?;
+        // The polylines never change: the net as given has the current net's triangles.
+        let flat = base_mesh.solver.given_net().triangles().concat();
+        unsafe { copy_out(&flat, indices, capacity, needed, "indices") }
+    })
+}
+
+/// Builds the rectifying strips of family `k` (0: rows, 1: columns, 2: a web's diagonals) on the
+/// current net: on every polyline, the developable strip of planar quads whose rulings are fitted
+/// to the nodes' common rulings (Sec. 5.2.1; a web's diagonals, which share no node rulings, to
+/// their own), cut to `width` (> 0, the net's units) and unrolled, judged with
+/// `tolerance_degrees` in (0, 180) against the family's target angle (`target_degrees` of
+/// `lml_base_mesh_family_report`) on the reference. The strips are a new `LmlStrips` handle
+/// (read it with the `lml_strips_*` functions, release it with `lml_strips_free`); a strip's
+/// curve index is its polyline's index within the family. Polylines that carry no strip are
+/// listed by `lml_strips_skipped`.
 ///
 /// Returns `LML_STATUS_OK` (every strip within the tolerance, no flipped quad);
 /// `LML_STATUS_NO_ACCEPTABLE_FAMILY` (the strips are built and `*out` is valid, but some miss the
 /// angle by more than the tolerance, have flipped quads or leave the surface, or no strip could
 /// be built: `lml_last_error_message()` names the worst strip, `lml_strips_verdict` gives the
-/// numbers); `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `k` > 1, `width` or
-/// `tolerance_degrees` out of range, named).
+/// numbers); `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `k` not below
+/// `lml_base_mesh_family_count`, `width` or `tolerance_degrees` out of range, named).
 #[no_mangle]
 pub unsafe extern "C" fn lml_base_mesh_strips(base_mesh: *const LmlBaseMesh, k: u32, width: f64, tolerance_degrees: f64, out: *mut *mut LmlStrips) -> LmlStatus {
     guarded(|| {
@@ -461,10 +664,8 @@ pub unsafe extern "C" fn lml_base_mesh_strips(base_mesh: *const LmlBaseMesh, k: 
         let mut out = unsafe { Out::new(out, "out") }?;
         out.set(std::ptr::null_mut());
         let base_mesh = unsafe { handle(base_mesh, "base_mesh") }?;
-        if k > 1 {
-            return Err(Failure::argument("k", format!("a net has families 0 (rows) and 1 (columns), got {k}")));
-        }
-        let pattern = base_mesh.solver.family_strips(k as usize, width, tolerance_degrees)?;
+        let k = family_index(base_mesh, k)?;
+        let pattern = base_mesh.solver.family_strips(k, width, tolerance_degrees)?;
         let status = if pattern.verdict.is_acceptable() {
             LmlStatus::Ok
         } else {
@@ -473,9 +674,9 @@ pub unsafe extern "C" fn lml_base_mesh_strips(base_mesh: *const LmlBaseMesh, k: 
         };
         // Each family's strips are judged at its target (the solver's own reading of θ).
         // A constant-slope family prescribes no angle: its strips have one each (as shading strips).
-        let theta_degrees = match base_mesh.solver.params().families[k as usize] {
+        let theta_degrees = match base_mesh.solver.params().families[k] {
             Family::ConstantSlope { .. } => None,
-            _ => Some(base_mesh.solver.targets_degrees()[k as usize]),
+            _ => Some(base_mesh.solver.targets_degrees()[k]),
         };
         out.set_owned(LmlStrips { pattern, theta_degrees });
         Ok(status)

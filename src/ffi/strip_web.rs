@@ -11,13 +11,20 @@ use super::status::LmlStatus;
 use super::strip_net::{level_index, LmlNode};
 use super::strips::LmlStrips;
 use super::web::{levels_of, web_family};
-use crate::net::{strip_web, Node, StripWeb};
+use crate::net::{strip_web, Node, StripWeb, Web};
 use crate::strips::StripPattern;
 
 /// The web and nodes of three strip families (opaque). Create it with `lml_strip_web_new`,
 /// release it with `lml_strip_web_free`. Immutable once created.
 pub struct LmlStripWeb {
     web: StripWeb,
+}
+
+impl LmlStripWeb {
+    /// The web of crossings (for `lml_base_mesh_from_strip_web`).
+    pub(crate) fn web(&self) -> &Web {
+        &self.web.web
+    }
 }
 
 /// One node of a 3-web gridshell: where a strip of one family crosses a strip of another. At a

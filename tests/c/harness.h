@@ -3,6 +3,7 @@
 #define LAMELLA_HARNESS_H
 
 #include "cylinder.h"
+#include "hypar.h"
 #include "lamella.h"
 
 /* Versions, status names, error messages, the panic guard. */
@@ -61,8 +62,15 @@ void check_net_save_and_restore(LmlNet *net, size_t n);
 /* A 3-web (Sec. 4.2) on a hyperbolic paraboloid: the AAG web from the asymptotic net's default
  * start, stepped to convergence, Eq. 18 from the fields read back, the strips of its three
  * families with the web of triangles and the Kagome pattern and their nodes, a saved session
- * restored, every invalid input. */
+ * restored, every invalid input; then the web of triangles optimised (test_base_mesh_web). */
 void test_web(void);
+
+/* Base-mesh optimisation (Sec. 3.5) of the AAG web of triangles `web` of z = xy/5 (its arrays
+ * `arrays`) near `reference`: from the strip web and from flat arrays (the same session), stepped
+ * to convergence; the diagonals' binormals against the exact normal before and after, the rows and
+ * columns tangent, the vertices on the surface, the family reports, the triangles, the diagonals'
+ * strips, save and restore, every invalid input. */
+void test_base_mesh_web(const LmlMesh *reference, const LmlStripWeb *web, const WebArrays *arrays);
 
 /* Surface optimisation (Sec. 3.3) of the cylinder towards 45 degrees within an absolute tolerance:
  * every invalid input, stepping, positions and deviations against the distance from the axis. */
@@ -73,6 +81,10 @@ void test_reshape(const Cylinder *cylinder);
  * the vertices back on the cylinder and geodesic, the nodes' ruling angles, the strips of both
  * families (planar quads, the rulings at the nodes). */
 void test_base_mesh(void);
+/* Saves a base-mesh session (stepped 3 iterations), restores it, and steps both five iterations:
+ * the same reports (every family's) and positions, to the bit. Truncated and damaged bytes, a net
+ * session's magic, a future version and NULL arguments are refused. */
+void check_base_mesh_save_and_restore(LmlBaseMesh *session);
 
 /* Constant-slope families on the cylinder: every invalid input, the start field and the solve
  * about its axis (helices, straight in the development at the slope), and the boundary of the

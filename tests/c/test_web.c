@@ -13,10 +13,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* 19 x 19 jittered cells on [-5, 5]^2: 400 vertices (small enough for valgrind). */
-#define CELLS 19
-#define HALF_WIDTH 5.0
-#define HYPAR_C 5.0
 /* Levels asked of the first two families, the strips' width, the iteration cap. */
 #define WEB_LEVELS 6
 #define STRIP_WIDTH 0.25
@@ -27,26 +23,6 @@
 /* The converged fields' largest range is at least this fraction of G's range at the start: they
  * do not shrink toward constants (where Eq. 18 would hold trivially). */
 #define FIELD_SCALE_KEPT 0.2
-#define GRID_VERTICES ((CELLS + 1) * (CELLS + 1))
-
-typedef struct {
-    size_t n, m;
-    double xyz[3 * GRID_VERTICES];
-    uint32_t triangles[6 * CELLS * CELLS];
-    /* The mean length of the mesh's edges, each counted once. */
-    double mean_edge;
-} Hypar;
-
-/* The arrays of an LmlStripWeb. */
-typedef struct {
-    size_t vertex_count, face_count, face_index_count, node_count;
-    double *xyz;
-    int64_t *levels;
-    uint32_t *face_sizes, *faces;
-    LmlWebNode *nodes;
-    size_t polyline_count[3], polyline_index_count[3];
-    uint32_t *polyline_sizes[3], *polyline_vertices[3], *polyline_levels[3];
-} WebArrays;
 
 /* The centre lines of one family's strips. */
 typedef struct {
@@ -54,62 +30,6 @@ typedef struct {
     size_t *offsets;
     double *centres;
 } CentreLines;
-
-/* A deterministic displacement in [-0.25, 0.25] cells. */
-static double jitter(size_t v, int k)
-{
-    double x = sin(12.9898 * (double)v + 78.233 * (double)k) * 43758.5453;
-    return 0.5 * (x - floor(x)) - 0.25;
-}
-
-static double distance(const double *a, const double *b)
-{
-    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-}
-
-/* z = xy/5 over a jittered grid, the boundary straight, the diagonals alternating. */
-static void hypar_generate(Hypar *h)
-{
-    const double cell = 2.0 * HALF_WIDTH / CELLS;
-    size_t i, j, edges = 0;
-    double total = 0.0;
-    h->n = GRID_VERTICES;
-    h->m = 2 * CELLS * CELLS;
-    for (j = 0; j <= CELLS; j++) {
-        for (i = 0; i <= CELLS; i++) {
-            size_t v = j * (CELLS + 1) + i;
-            double x = -HALF_WIDTH + cell * ((double)i + ((i > 0 && i < CELLS) ? jitter(v, 0) : 0.0));
-            double y = -HALF_WIDTH + cell * ((double)j + ((j > 0 && j < CELLS) ? jitter(v, 1) : 0.0));
-            h->xyz[3 * v] = x;
-            h->xyz[3 * v + 1] = y;
-            h->xyz[3 * v + 2] = x * y / HYPAR_C;
-        }
-    }
-    for (j = 0; j < CELLS; j++) {
-        for (i = 0; i < CELLS; i++) {
-            uint32_t a = (uint32_t)(j * (CELLS + 1) + i), b = a + 1, d = a + CELLS + 1, e = d + 1;
-            uint32_t *t = h->triangles + 6 * (j * CELLS + i);
-            /* Counter-clockwise seen from above: normals point up. */
-            if ((i + j) % 2 == 0) {
-                t[0] = a; t[1] = b; t[2] = e; t[3] = a; t[4] = e; t[5] = d;
-                total += distance(h->xyz + 3 * a, h->xyz + 3 * e);
-            } else {
-                t[0] = a; t[1] = b; t[2] = d; t[3] = b; t[4] = e; t[5] = d;
-                total += distance(h->xyz + 3 * b, h->xyz + 3 * d);
-            }
-            edges++;
-        }
-    }
-    /* The grid's rows and columns of edges. */
-    for (j = 0; j <= CELLS; j++) {
-        for (i = 0; i < CELLS; i++) {
-            total += distance(h->xyz + 3 * (j * (CELLS + 1) + i), h->xyz + 3 * (j * (CELLS + 1) + i + 1));
-            total += distance(h->xyz + 3 * (i * (CELLS + 1) + j), h->xyz + 3 * ((i + 1) * (CELLS + 1) + j));
-            edges += 2;
-        }
-    }
-    h->mean_edge = total / (double)edges;
-}
 
 /* max - min of `n` values. */
 static double field_range(const double *values, size_t n)
@@ -121,77 +41,6 @@ static double field_range(const double *values, size_t n)
         high = fmax(high, values[v]);
     }
     return high - low;
-}
-
-/* `count` elements of `size` bytes (at least one byte, so that NULL means out of memory). */
-static void *allocate(size_t count, size_t size)
-{
-    void *p = malloc(count * size + 1);
-    if (p == NULL) {
-        CHECK(!"out of memory");
-    }
-    return p;
-}
-
-static void free_web_arrays(WebArrays *a)
-{
-    int k;
-    free(a->xyz);
-    free(a->levels);
-    free(a->face_sizes);
-    free(a->faces);
-    free(a->nodes);
-    for (k = 0; k < 3; k++) {
-        free(a->polyline_sizes[k]);
-        free(a->polyline_vertices[k]);
-        free(a->polyline_levels[k]);
-    }
-    memset(a, 0, sizeof *a);
-}
-
-/* Reads every array of `web` with the two-call pattern; whether all were read. */
-static int read_web(const LmlStripWeb *web, WebArrays *a)
-{
-    size_t needed = 0;
-    uint32_t k;
-    memset(a, 0, sizeof *a);
-    CHECK_STATUS(lml_strip_web_vertices(web, NULL, 0, &a->vertex_count), LML_STATUS_BUFFER_TOO_SMALL);
-    CHECK_STATUS(lml_strip_web_face_sizes(web, NULL, 0, &a->face_count), LML_STATUS_BUFFER_TOO_SMALL);
-    CHECK_STATUS(lml_strip_web_face_vertices(web, NULL, 0, &a->face_index_count), LML_STATUS_BUFFER_TOO_SMALL);
-    CHECK_STATUS(lml_strip_web_nodes(web, NULL, 0, &a->node_count), LML_STATUS_BUFFER_TOO_SMALL);
-    CHECK(a->vertex_count % 3 == 0);
-    a->vertex_count /= 3;
-    a->xyz = allocate(3 * a->vertex_count, sizeof(double));
-    a->levels = allocate(3 * a->vertex_count, sizeof(int64_t));
-    a->face_sizes = allocate(a->face_count, sizeof(uint32_t));
-    a->faces = allocate(a->face_index_count, sizeof(uint32_t));
-    a->nodes = allocate(a->node_count, sizeof(LmlWebNode));
-    if (a->xyz == NULL || a->levels == NULL || a->face_sizes == NULL || a->faces == NULL || a->nodes == NULL) {
-        return 0;
-    }
-    CHECK_STATUS(lml_strip_web_vertices(web, a->xyz, 3 * a->vertex_count, &needed), LML_STATUS_OK);
-    CHECK_STATUS(lml_strip_web_vertex_levels(web, a->levels, 3 * a->vertex_count - 1, &needed), LML_STATUS_BUFFER_TOO_SMALL);
-    CHECK(needed == 3 * a->vertex_count);
-    CHECK_STATUS(lml_strip_web_vertex_levels(web, a->levels, 3 * a->vertex_count, &needed), LML_STATUS_OK);
-    CHECK_STATUS(lml_strip_web_face_sizes(web, a->face_sizes, a->face_count, &needed), LML_STATUS_OK);
-    CHECK_STATUS(lml_strip_web_face_vertices(web, a->faces, a->face_index_count, &needed), LML_STATUS_OK);
-    CHECK_STATUS(lml_strip_web_nodes(web, a->nodes, a->node_count, &needed), LML_STATUS_OK);
-    for (k = 0; k < 3; k++) {
-        size_t count = 0;
-        CHECK_STATUS(lml_strip_web_polyline_sizes(web, k, NULL, 0, &a->polyline_count[k]), LML_STATUS_BUFFER_TOO_SMALL);
-        CHECK_STATUS(lml_strip_web_polyline_vertices(web, k, NULL, 0, &a->polyline_index_count[k]), LML_STATUS_BUFFER_TOO_SMALL);
-        a->polyline_sizes[k] = allocate(a->polyline_count[k], sizeof(uint32_t));
-        a->polyline_levels[k] = allocate(a->polyline_count[k], sizeof(uint32_t));
-        a->polyline_vertices[k] = allocate(a->polyline_index_count[k], sizeof(uint32_t));
-        if (a->polyline_sizes[k] == NULL || a->polyline_levels[k] == NULL || a->polyline_vertices[k] == NULL) {
-            return 0;
-        }
-        CHECK_STATUS(lml_strip_web_polyline_sizes(web, k, a->polyline_sizes[k], a->polyline_count[k], &needed), LML_STATUS_OK);
-        CHECK_STATUS(lml_strip_web_polyline_levels(web, k, a->polyline_levels[k], a->polyline_count[k], &count), LML_STATUS_OK);
-        CHECK(count == a->polyline_count[k]);
-        CHECK_STATUS(lml_strip_web_polyline_vertices(web, k, a->polyline_vertices[k], a->polyline_index_count[k], &needed), LML_STATUS_OK);
-    }
-    return 1;
 }
 
 /* The centre lines of `strips`; whether they were read. */
@@ -377,8 +226,9 @@ static LmlStrips *web_strips(const LmlNet *net, uint32_t k, int kagome, double t
     return strips;
 }
 
-/* The web of triangles and the Kagome pattern of the converged AAG web. */
-static void check_strip_webs(const LmlNet *net, double mean_edge)
+/* The web of triangles and the Kagome pattern of the converged AAG web (on `mesh`); the web of
+ * triangles then optimised (test_base_mesh_web). */
+static void check_strip_webs(const LmlNet *net, const LmlMesh *mesh, double mean_edge)
 {
     const double thetas[3] = {0.0, 0.0, 90.0};
     LmlStrips *strips[3] = {NULL, NULL, NULL}, *kagome_strips = NULL;
@@ -454,6 +304,7 @@ static void check_strip_webs(const LmlNet *net, double mean_edge)
     CHECK_MESSAGE("needed");
     CHECK_STATUS(lml_strip_web_nodes(web, a.nodes, a.node_count - 1, &f), LML_STATUS_BUFFER_TOO_SMALL);
     CHECK(f == a.node_count);
+    test_base_mesh_web(mesh, web, &a);
     free_web_arrays(&a);
 
     /* The Kagome pattern: the third family shifted by half a pace, every crossing of two families. */
@@ -661,7 +512,7 @@ void test_web(void)
            web_report.residual_max, range, start_range);
     CHECK(fabs(worst / range - web_report.residual_max) <= 1e-3 * web_report.residual_max + 1e-15);
 
-    check_strip_webs(web, h.mean_edge);
+    check_strip_webs(web, mesh, h.mean_edge);
 
 done:
     for (k = 0; k < 3; k++) {

@@ -86,16 +86,33 @@ def line(p, x0, y0, x1, y1, colour):
         dot(p, int(round(x0 + (x1 - x0) * t)), int(round(y0 + (y1 - y0) * t)), colour)
 
 
+def web(p, count, spacing, start, diagonal):
+    # Three families: `count` parallels each way from `start`, `spacing` apart, and the diagonals through their
+    # crossings (a 3-web of triangles, Sec. 4.2), the diagonals in the colour `diagonal`.
+    for k in range(count):
+        line(p, 2, start + spacing * k, 21, start + spacing * k, INK)
+        line(p, start + spacing * k, 2, start + spacing * k, 21, INK)
+    for m in range(1, 2 * count - 2):
+        for x in range(start, 22):
+            if start <= 2 * start + spacing * m - x <= 21:
+                dot(p, x, 2 * start + spacing * m - x, diagonal)
+
+
 def strip_web():
-    # Three families: two sets of parallels and their diagonals (a 3-web of triangles, Sec. 4.2).
     p = canvas()
-    for k in range(4):
-        line(p, 2, 3 + 6 * k, 21, 3 + 6 * k, INK)
-        line(p, 3 + 6 * k, 2, 3 + 6 * k, 21, INK)
-    for k in range(-2, 3):
-        for x in range(3, 22):
-            if 3 <= 24 + 6 * k - x <= 21:
-                dot(p, x, 24 + 6 * k - x, ACCENT)
+    web(p, 4, 6, 3, ACCENT)
+    return p
+
+
+def optimise_web():
+    # A 3-web whose vertices (the accent squares) the optimisation moves until each family is exact (Sec. 3.5).
+    p = canvas()
+    web(p, 3, 7, 4, INK)
+    for i in range(3):
+        for j in range(3):
+            for dx in (-1, 0, 1):
+                for dy in (-1, 0, 1):
+                    dot(p, 4 + 7 * i + dx, 4 + 7 * j + dy, ACCENT)
     return p
 
 
@@ -106,5 +123,6 @@ def library():
 
 
 for name, draw in [("StripField", strip_field), ("LevelCurves", level_curves), ("RectifyingStrips", rectifying_strips),
-                   ("StripQuality", strip_quality), ("TracePCurve", trace_p_curve), ("StripWeb", strip_web), ("Lamella", library)]:
+                   ("StripQuality", strip_quality), ("TracePCurve", trace_p_curve), ("StripWeb", strip_web), ("OptimiseWeb", optimise_web),
+                   ("Lamella", library)]:
     png(name + ".png", draw())

@@ -172,7 +172,7 @@ namespace Lamella.Conversion
         /// The representative of each vertex: itself, or the first earlier representative within the tolerance. A grid
         /// of cells the size of the tolerance finds the candidates in the 27 cells around a vertex.
         /// </summary>
-        private static int[] Weld(double[] xyz, double tolerance, out int welded)
+        internal static int[] Weld(double[] xyz, double tolerance, out int welded)
         {
             int n = xyz.Length / 3;
             var representative = new int[n];

@@ -4,6 +4,30 @@ using System.Collections.Generic;
 namespace Lamella.Conversion
 {
     /// <summary>
+    /// A net or a web given as polylines of points, welded (<see cref="NetPolylines.FromPoints"/>): its vertices and each
+    /// family's polylines as vertex indices, as <see cref="BaseMeshSolver"/> takes them.
+    /// </summary>
+    public sealed class WeldedNet
+    {
+        internal WeldedNet(double[] xyz, int[][][] polylines, int weldedPoints)
+        {
+            Xyz = xyz;
+            Polylines = polylines;
+            WeldedPoints = weldedPoints;
+        }
+
+        /// <summary>The vertices, x, y, z each, in the order of their first point (family by family, polyline by polyline).</summary>
+        public double[] Xyz { get; }
+        /// <summary>Per family (0 the rows, 1 the columns, 2 a web's diagonals), its polylines as vertex indices into <see cref="Xyz"/>.</summary>
+        public int[][][] Polylines { get; }
+        /// <summary>Points merged into an earlier one: the crossings of the polylines, counted once per further point there.</summary>
+        public int WeldedPoints { get; }
+
+        /// <summary>The number of vertices.</summary>
+        public int VertexCount => Xyz.Length / 3;
+    }
+
+    /// <summary>
     /// The rows and columns of a quad mesh with the combinatorics of a net (paper Sec. 3.5), as
     /// <see cref="BaseMeshSolver"/> takes them: opposite sides of a quad belong to one family, neighbouring quads agree on
     /// the side they share, and every vertex has at most two neighbours along each family. The first quad of each
@@ -91,6 +115,67 @@ namespace Lamella.Conversion
                 Link(neighbours[k], b, a, k);
             }
             return new[] { Chains(neighbours[0], "row"), Chains(neighbours[1], "column") };
+        }
+
+        /// <summary>
+        /// The net (two families) or web (three) of polylines given by their points: <paramref name="families"/>[k][l] holds
+        /// the x, y, z of polyline l of family k (0 the rows, 1 the columns, 2 the diagonals), in order along it, such as
+        /// Strip Web's polylines. Points closer than <paramref name="tolerance"/> (≥ 0; 0 welds identical positions only)
+        /// become one vertex at the first one's position: where polylines of different families cross, they share it.
+        /// </summary>
+        /// <exception cref="ArgumentException">A polyline whose coordinates are not x, y, z triples, non-finite, of fewer than two points, or with two consecutive points within the tolerance (named rows[l], columns[l] or diagonals[l]).</exception>
+        public static WeldedNet FromPoints(double[][][] families, double tolerance)
+        {
+            if (families == null) throw new ArgumentNullException(nameof(families));
+            if (!(tolerance >= 0) || double.IsInfinity(tolerance)) throw new ArgumentOutOfRangeException(nameof(tolerance), "the weld tolerance must be finite and ≥ 0");
+            var points = new List<double>();
+            for (int k = 0; k < families.Length; k++)
+            {
+                if (families[k] == null) throw new ArgumentNullException(nameof(families), "family " + k + " is null");
+                for (int l = 0; l < families[k].Length; l++)
+                {
+                    double[] line = families[k][l];
+                    string name = BaseMeshSolver.FamilyName(k) + "[" + l + "]";
+                    if (line == null || line.Length % 3 != 0) throw new ArgumentException(name + " does not hold x, y, z triples", nameof(families));
+                    if (line.Length < 6) throw new ArgumentException(name + " has " + line.Length / 3 + " points; a polyline needs at least 2", nameof(families));
+                    foreach (double c in line)
+                    {
+                        if (double.IsNaN(c) || double.IsInfinity(c)) throw new ArgumentException(name + " has a non-finite coordinate", nameof(families));
+                    }
+                    points.AddRange(line);
+                }
+            }
+            double[] all = points.ToArray();
+            int welded;
+            int[] representative = CleanMesh.Weld(all, tolerance, out welded);
+            // The vertices in the order of their representatives.
+            var vertex = new int[representative.Length];
+            var xyz = new List<double>();
+            for (int p = 0; p < representative.Length; p++)
+            {
+                if (representative[p] != p) continue;
+                vertex[p] = xyz.Count / 3;
+                xyz.AddRange(new[] { all[3 * p], all[3 * p + 1], all[3 * p + 2] });
+            }
+            var polylines = new int[families.Length][][];
+            int at = 0;
+            for (int k = 0; k < families.Length; k++)
+            {
+                polylines[k] = new int[families[k].Length][];
+                for (int l = 0; l < families[k].Length; l++)
+                {
+                    int[] line = polylines[k][l] = new int[families[k][l].Length / 3];
+                    for (int i = 0; i < line.Length; i++, at++)
+                    {
+                        line[i] = vertex[representative[at]];
+                        if (i > 0 && line[i] == line[i - 1])
+                        {
+                            throw new ArgumentException(BaseMeshSolver.FamilyName(k) + "[" + l + "]: points " + (i - 1) + " and " + i + " are within the weld tolerance " + tolerance.ToString(System.Globalization.CultureInfo.InvariantCulture), nameof(families));
+                        }
+                    }
+                }
+            }
+            return new WeldedNet(xyz.ToArray(), polylines, welded);
         }
 
         private static long EdgeKey(int[] quads, int q, int s, int vertexCount)

@@ -174,6 +174,12 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_base_mesh_from_strip_net(StripNetHandle net, MeshHandle reference, double thetaDegreesRows,
             double thetaDegreesColumns, uint torsionFree, out BaseMeshHandle baseMesh);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_base_mesh_new_web(MeshHandle reference, double[] xyz, UIntPtr vertexCount, uint[] polylineVertices,
+            UIntPtr polylineVertexCount, uint[] polylineLengths, UIntPtr rowCount, UIntPtr columnCount, UIntPtr diagonalCount, double[] thetas,
+            out BaseMeshHandle baseMesh);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_base_mesh_from_strip_web(StripWebHandle web, MeshHandle reference, double[] thetas, out BaseMeshHandle baseMesh);
         [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_base_mesh_free(IntPtr baseMesh);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_base_mesh_step(BaseMeshHandle baseMesh, uint maxIterations, out BaseMeshReportRecord report);
@@ -184,6 +190,11 @@ namespace Lamella.Interop
         public static extern Status lml_base_mesh_positions(BaseMeshHandle baseMesh, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_base_mesh_nodes(BaseMeshHandle baseMesh, [Out] BaseMeshNodeRecord[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_base_mesh_family_count(BaseMeshHandle baseMesh, out uint count);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_base_mesh_family_report(BaseMeshHandle baseMesh, uint k, out BaseMeshFamilyReportRecord report);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_base_mesh_triangles(BaseMeshHandle baseMesh, [Out] uint[] buffer, UIntPtr capacity, out UIntPtr needed);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_base_mesh_strips(BaseMeshHandle baseMesh, uint k, double width, double toleranceDegrees, out StripsHandle strips);
         [DllImport(Library, CallingConvention = Cdecl)]

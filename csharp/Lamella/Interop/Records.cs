@@ -212,6 +212,20 @@ namespace Lamella.Interop
         public double[] Axis;
     }
 
+    /// <summary>
+    /// <c>LmlBaseMeshFamilyReport</c>: one family's part of a base-mesh report (angles in degrees). The binding hands it
+    /// out as <see cref="BaseMeshFamilyReport"/>.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct BaseMeshFamilyReportRecord
+    {
+        public double TargetDegrees;
+        public double AngleErrorRmsDegrees;
+        public double AngleErrorMaxDegrees;
+        public ulong MeasuredVertices;
+        public ulong StraightVertices;
+    }
+
     /// <summary><c>LmlShadingReport</c>: the state of a shading optimisation after a step. The binding hands it out as <see cref="ShadingReport"/>.</summary>
     [StructLayout(LayoutKind.Sequential)]
     internal struct ShadingReportRecord

@@ -34,6 +34,12 @@ namespace Grasshopper.Kernel.Data
     {
         public GH_Path(int index) { throw new NotSupportedException("facade"); }
     }
+
+    public class GH_Structure<T> where T : Grasshopper.Kernel.Types.IGH_Goo
+    {
+        public GH_Structure() { throw new NotSupportedException("facade"); }
+        public IList<List<T>> Branches { get { throw new NotSupportedException("facade"); } }
+    }
 }
 
 namespace Grasshopper.Kernel
@@ -88,6 +94,7 @@ namespace Grasshopper.Kernel
     {
         bool GetData<T>(int index, ref T destination);
         bool GetDataList<T>(int index, List<T> list);
+        bool GetDataTree<T>(int index, out Grasshopper.Kernel.Data.GH_Structure<T> tree) where T : Grasshopper.Kernel.Types.IGH_Goo;
         bool SetData(int paramIndex, object data);
         bool SetDataList(int paramIndex, IEnumerable data);
         bool SetDataTree(int paramIndex, Grasshopper.Kernel.Data.IGH_DataTree tree);
@@ -217,5 +224,16 @@ namespace Grasshopper.Kernel.Types
         public abstract string TypeDescription { get; }
         public abstract IGH_Goo Duplicate();
         public abstract override string ToString();
+    }
+
+    // The real GH_Curve derives from GH_GeometricGoo<Curve> (itself a GH_Goo<Curve>); the plugin only reads Value.
+    public class GH_Curve : GH_Goo<Rhino.Geometry.Curve>
+    {
+        public GH_Curve() { throw new NotSupportedException("facade"); }
+        public override bool IsValid { get { throw new NotSupportedException("facade"); } }
+        public override string TypeName { get { throw new NotSupportedException("facade"); } }
+        public override string TypeDescription { get { throw new NotSupportedException("facade"); } }
+        public override IGH_Goo Duplicate() { throw new NotSupportedException("facade"); }
+        public override string ToString() { throw new NotSupportedException("facade"); }
     }
 }
