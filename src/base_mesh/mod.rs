@@ -19,7 +19,7 @@ mod strips;
 pub use error::BaseMeshError;
 pub use net_mesh::{NetMesh, MAX_NET_VERTICES};
 pub use node_torsion::{node_rulings, polyline_rulings, NodeRuling, NodeTorsion, PolylineRulings, TORSION_FREE_DEGREES};
-pub use params::{BaseMeshParams, BaseMeshWeights, WEB_FAIRNESS};
+pub use params::{BaseMeshParams, BaseMeshWeights};
 pub use report::{BaseMeshReport, Deviation};
 pub use session::{BASE_MESH_SESSION_MAGIC, BASE_MESH_SESSION_VERSION};
 pub use solver::BaseMeshSolver;

@@ -31,9 +31,6 @@ impl Default for BaseMeshWeights {
     }
 }
 
-/// Fairness weight of a web's base-mesh optimisation (see [`BaseMeshParams::web`]).
-pub const WEB_FAIRNESS: f64 = 1e-4;
-
 /// Parameters of a base-mesh optimisation.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct BaseMeshParams {
@@ -75,15 +72,8 @@ impl BaseMeshParams {
 
     /// Defaults for a 3-web (Table 1's AAG, AGG, PPG, …): the families of its rows, columns and
     /// diagonals.
-    ///
-    /// A web's fairness weight is 1e-4 (a net's 1e-3): fairness pulls a web's vertices together
-    /// along three families, and on the AAG web of z = xy/5 at 1e-3 the optimised web's extent
-    /// shrank by 21 % (9 % at 1e-4, its diagonals as geodesic; the paper's Table 3 weighs the
-    /// fairness of its webs 1e-5 to 2e-5 of the curve terms).
     pub fn web(rows: Family, columns: Family, diagonals: Family) -> BaseMeshParams {
-        let mut params = BaseMeshParams { families: vec![rows.by_name(), columns.by_name(), diagonals.by_name()], ..BaseMeshParams::new(rows, columns) };
-        params.weights.fair = WEB_FAIRNESS;
-        params
+        BaseMeshParams { families: vec![rows.by_name(), columns.by_name(), diagonals.by_name()], ..BaseMeshParams::new(rows, columns) }
     }
 
     /// Checks every parameter, naming the first one out of range.
