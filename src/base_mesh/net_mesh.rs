@@ -180,9 +180,11 @@ impl NetMesh {
         let joined = |a: u32, b: u32, k: usize| self.neighbours[a as usize][k].contains(&Some(b));
         let mut triangles = Vec::new();
         for [a, b] in self.segments(0) {
+            // A triangle has one row segment: it can only repeat among this segment's candidates.
+            let first = triangles.len();
             for c in self.neighbours[a as usize][1].into_iter().chain(self.neighbours[b as usize][1]).flatten() {
                 let closed = (joined(a, c, 1) && joined(b, c, 2)) || (joined(b, c, 1) && joined(a, c, 2));
-                if closed && !triangles.contains(&[a, b, c]) {
+                if closed && !triangles[first..].contains(&[a, b, c]) {
                     triangles.push([a, b, c]);
                 }
             }
