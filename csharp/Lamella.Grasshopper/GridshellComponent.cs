@@ -11,23 +11,33 @@ using Rhino.Geometry;
 namespace Lamella.Grasshopper
 {
     /// <summary>
-    /// What Strip Net and Strip Web share: a net session (two families or a 3-web) started from the default start and
-    /// solved within one solution, the strips of every family on its level curves with their verdicts, and the nodes as
-    /// points, axes and text.
+    /// What Strip Net and Strip Web share: a net session (two families or a 3-web) per iteration, started from the
+    /// default start and kept across solutions while the mesh, the θs and Min Angle stay, solved live (Run: the level
+    /// curves of the current fields are shown while it steps) or within one solution (Solve); once it has converged or
+    /// stopped, the strips of every family on its level curves with their verdicts, and the nodes as points, axes and text.
     /// </summary>
-    public abstract class GridshellComponent : LamellaComponent
+    public abstract class GridshellComponent : LiveComponent
     {
+        private readonly LiveSessions<SolverSession<NetSolver, NetReport>> sessions = new LiveSessions<SolverSession<NetSolver, NetReport>>();
+
         protected GridshellComponent(string name, string nickname, string description, string iconName)
             : base(name, nickname, description, iconName)
         {
         }
 
+        protected override ILiveSessions Sessions => sessions;
+
+        /// <summary>The end of the descriptions of the outputs built only once the solve has converged or stopped.</summary>
+        protected const string BuiltOnceStopped = " Empty while Run steps: built once the solve converges or stops.";
+
         /// <summary>
         /// Registers the inputs every gridshell has: Mesh, one θ per family (<paramref name="thetas"/>: description and
         /// default of each), Min Angle, Count, then <paramref name="extras"/> inputs that <paramref name="addExtras"/>
-        /// (null for none) adds, then Width (optional), Max Iterations and Solve. <see cref="ReadInputs"/> reads them.
+        /// (null for none) adds, then Width (optional), Max Iterations, Solve and Run (after Solve, so that documents
+        /// saved before Run existed keep their Solve wires). <paramref name="design"/> names the design ("net", "web").
+        /// <see cref="ReadInputs"/> reads them.
         /// </summary>
-        protected static void RegisterGridshellInputs(GH_InputParamManager pManager, string[] thetaDescriptions, double[] thetaDefaults,
+        protected static void RegisterGridshellInputs(GH_InputParamManager pManager, string design, string[] thetaDescriptions, double[] thetaDefaults,
             string minAngleDescription, string countDescription, int extras, Action<GH_InputParamManager> addExtras)
         {
             pManager.AddMeshParameter("Mesh", "M", "The surface (triangulated and cleaned like Strip Field's input).", GH_ParamAccess.item);
@@ -40,8 +50,32 @@ namespace Lamella.Grasshopper
             if (addExtras != null) addExtras(pManager);
             pManager.AddNumberParameter("Width", "W", "Width of each flat strip, in document units, > 0. Default: a round number near 2 % of the curves' extent (named in a remark).", GH_ParamAccess.item);
             pManager[thetaDefaults.Length + 3 + extras].Optional = true;
-            pManager.AddIntegerParameter("Max Iterations", "I", "The most solver iterations (a count, ≥ 1). Default 300.", GH_ParamAccess.item, 300);
-            pManager.AddBooleanParameter("Solve", "Sv", "True solves within this solution. Default false.", GH_ParamAccess.item, false);
+            pManager.AddIntegerParameter("Max Iterations", "I", "The most solver iterations (a count, ≥ 1); live and one-shot solving stop there with a warning if not converged. Default 300.", GH_ParamAccess.item, 300);
+            pManager.AddBooleanParameter("Solve", "Sv", SolveDescription("the " + design) + " Changing the mesh, a θ or Min Angle starts over; Count, Width and the others only rebuild the strips.", GH_ParamAccess.item, false);
+            pManager.AddBooleanParameter("Run", "Run", RunDescription("the " + design,
+                "; meanwhile Curves shows the level curves of the current fields and Report the state, and the strips, the " + design + ", the nodes and Acceptable are built once it converges or stops (at Max Iterations, on Escape, or when Run is switched off)"),
+                GH_ParamAccess.item, false);
+        }
+
+        /// <summary>
+        /// Registers the outputs every gridshell has: Curves and Strip Meshes (a branch per family, as
+        /// <paramref name="branches"/> says; while Run steps, Curves holds the level curves of the current fields, at
+        /// <paramref name="levels"/>), the outputs <paramref name="addDesign"/> adds (the net or web), Nodes, Node Axes and
+        /// Node Data (nicknames <paramref name="nodesNickname"/> and <paramref name="axesNickname"/>; the nodes and their
+        /// strips as <paramref name="nodes"/> and <paramref name="nodeStrips"/> describe them), Acceptable and Report
+        /// (<paramref name="report"/>). Everything but Curves and Report is built once the solve converges or stops.
+        /// </summary>
+        protected static void RegisterGridshellOutputs(GH_OutputParamManager pManager, string branches, string levels, Action<GH_OutputParamManager> addDesign,
+            string nodesNickname, string axesNickname, string nodes, string nodeStrips, string report)
+        {
+            pManager.AddCurveParameter("Curves", "C", "The strips' centre lines: " + branches + "; while Run steps, the level curves of the current fields" + levels + " (the strips' curves to be).", GH_ParamAccess.tree);
+            pManager.AddMeshParameter("Strip Meshes", "S", "One planar-quad mesh per strip: " + branches + "." + BuiltOnceStopped, GH_ParamAccess.tree);
+            addDesign(pManager);
+            pManager.AddPointParameter("Nodes", nodesNickname, nodes + BuiltOnceStopped, GH_ParamAccess.list);
+            pManager.AddVectorParameter("Node Axes", axesNickname, "Per node, the unit node axis (the mean of the two strips' rulings there)." + BuiltOnceStopped, GH_ParamAccess.list);
+            pManager.AddTextParameter("Node Data", "D", "Per node: " + nodeStrips + ", the arc length of the node along each (where its hole goes on the flat strip), the angle between the two rulings (0° for a torsion-free node) and, per strip, the angle atan |k| between its binormal and the ruling of its rectifying developable (Sec. 5.1), flagged where the ruling's singular point is near the strip." + BuiltOnceStopped, GH_ParamAccess.list);
+            pManager.AddBooleanParameter("Acceptable", "A", "Per family, true when its strips meet θ within the library's tolerance without flipped quads." + BuiltOnceStopped, GH_ParamAccess.list);
+            pManager.AddTextParameter("Report", "R", report + " (the verdicts once the strips are built).", GH_ParamAccess.item);
         }
 
         /// <summary>The inputs of <see cref="RegisterGridshellInputs"/>, read.</summary>
@@ -56,16 +90,18 @@ namespace Lamella.Grasshopper
             public double Width = double.NaN;
             public bool WidthGiven;
             public int MaxIterations = 300;
+            /// <summary>Solve (one-shot) and Run (live).</summary>
+            public bool SolveNow, Run;
             /// <summary>The index of the first input the component added itself.</summary>
             public int FirstExtra;
         }
 
         /// <summary>
         /// Reads the inputs of <see cref="RegisterGridshellInputs"/> (<paramref name="thetas"/>: the default θ of each family,
-        /// <paramref name="extras"/>: the component's own inputs after Count, which it reads itself). Null, with an error or
-        /// a remark, when there is no mesh, a count is out of range or Solve is false.
+        /// <paramref name="extras"/>: the component's own inputs after Count, which it reads itself). Null when there is no
+        /// mesh, or with an error when a count is out of range.
         /// </summary>
-        protected GridshellInputs ReadInputs(IGH_DataAccess DA, double[] thetas, int extras, string design)
+        protected GridshellInputs ReadInputs(IGH_DataAccess DA, double[] thetas, int extras)
         {
             var inputs = new GridshellInputs { Thetas = (double[])thetas.Clone() };
             if (!DA.GetData(0, ref inputs.Mesh) || inputs.Mesh == null) return null;
@@ -76,45 +112,62 @@ namespace Lamella.Grasshopper
             inputs.FirstExtra = 3 + n;
             inputs.WidthGiven = DA.GetData(3 + n + extras, ref inputs.Width);
             DA.GetData(4 + n + extras, ref inputs.MaxIterations);
-            bool solveNow = false;
-            DA.GetData(5 + n + extras, ref solveNow);
+            DA.GetData(5 + n + extras, ref inputs.SolveNow);
+            DA.GetData(6 + n + extras, ref inputs.Run);
             if (inputs.Count < 2 || inputs.MaxIterations < 1)
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Error, inputs.Count < 2 ? "Count must be at least 2" : "Max Iterations must be at least 1");
-                return null;
-            }
-            if (!solveNow)
-            {
-                AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, "set Solve to true to design the " + design);
                 return null;
             }
             return inputs;
         }
 
         /// <summary>
-        /// The cleaned input mesh as a library mesh and the default start of the first two families
-        /// (<see cref="NetSolver.DefaultStart"/>), both kept for this iteration.
+        /// The net session of this iteration, stepped as Run and Solve ask (see <see cref="LiveComponent.LiveSession{T}"/>):
+        /// kept while the cleaned mesh, the θs and Min Angle stay, else started by <paramref name="start"/> from the mesh and
+        /// the default start of the first two families (<see cref="NetSolver.DefaultStart"/>). Null (with a remark) when
+        /// neither Run nor Solve is on and these inputs have no session yet. <paramref name="design"/>: "net", "web".
         /// </summary>
-        protected double[][] DefaultStart(IGH_DataAccess DA, GridshellInputs inputs, out LamellaMesh mesh)
+        protected SolverSession<NetSolver, NetReport> NetSession(IGH_DataAccess DA, GridshellInputs inputs, string design, Func<LamellaMesh, double[][], NetSolver> start)
         {
             CleanMesh clean = CleanMeshInput(inputs.Mesh);
-            mesh = Keep(DA, LamellaMesh.FromArrays(clean.Xyz, clean.Triangles));
-            return NetSolver.DefaultStart(mesh, inputs.Thetas[0], inputs.Thetas[1], inputs.MinAngle);
+            var fingerprint = new List<double> { inputs.Thetas.Length };
+            fingerprint.AddRange(inputs.Thetas);
+            fingerprint.Add(inputs.MinAngle);
+            string signature = Signature.Of(clean.Xyz, clean.Triangles, fingerprint.ToArray());
+            return LiveSession(DA, sessions, signature, inputs.Run, inputs.SolveNow, "design the " + design, () =>
+            {
+                using (LamellaMesh mesh = LamellaMesh.FromArrays(clean.Xyz, clean.Triangles))
+                {
+                    return SolverSession.Of(start(mesh, NetSolver.DefaultStart(mesh, inputs.Thetas[0], inputs.Thetas[1], inputs.MinAngle)), signature);
+                }
+            });
         }
 
-        /// <summary>Steps <paramref name="net"/> (kept for this iteration) until it converges, <paramref name="maxIterations"/> or Escape; a warning when it did not converge.</summary>
-        protected NetReport SolveNet(IGH_DataAccess DA, NetSolver net, int maxIterations)
+        /// <summary>
+        /// Steps <paramref name="session"/> as Run and Solve ask. While it runs on (live, not converged, not stopped) only
+        /// the iterate is output: Curves (output 0) the level curves of each family's <paramref name="curves"/>, branch {k},
+        /// and <paramref name="reportOutput"/> the state (<paramref name="describe"/>), the message the iteration; then
+        /// null. Else the report, for the component to build and output everything.
+        /// </summary>
+        protected NetReport AdvanceOrShowIterate(IGH_DataAccess DA, SolverSession<NetSolver, NetReport> session, GridshellInputs inputs,
+            Func<int, LevelCurves> curves, int reportOutput, Func<NetReport, string> describe)
         {
-            Keep(DA, net);
-            NetReport report = net.Report;
-            while (report.Iterations < maxIterations && !report.IsConverged)
+            LiveStep<NetReport> step = Advance(session, inputs.Run, inputs.SolveNow, inputs.MaxIterations);
+            NetReport report = step.Outcome.Report;
+            if (!step.Continues) return report;
+            var levels = new DataTree<object>();
+            for (int k = 0; k < inputs.Thetas.Length; k++)
             {
-                if (GH_Document.IsEscapeKeyDown()) break;
-                report = net.Step((int)Math.Min(10, maxIterations - report.Iterations));
+                using (LevelCurves family = curves(k))
+                {
+                    levels.AddRange(LevelCurvesComponent.ClosedPolylines(family), new GH_Path(k));
+                }
             }
-            if (!report.IsConverged)
-                AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, string.Format(CultureInfo.InvariantCulture, "not converged after {0} iterations", report.Iterations));
-            return report;
+            Message = string.Format(CultureInfo.InvariantCulture, "iteration {0} · crossing ≥ {1:0.#}°", report.Iterations, report.MinIntersectionDegrees);
+            DA.SetDataTree(0, levels);
+            DA.SetData(reportOutput, describe(report));
+            return null;
         }
 
         /// <summary>The strips of every family of a gridshell and what the components output of them.</summary>

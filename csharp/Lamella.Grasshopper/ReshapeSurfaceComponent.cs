@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using System.Globalization;
 using Grasshopper.Kernel;
 using Lamella.Conversion;
+using Lamella.Hosting;
 using Rhino.Geometry;
 
 namespace Lamella.Grasshopper
@@ -10,19 +11,25 @@ namespace Lamella.Grasshopper
     /// <summary>
     /// Reshape Surface: moves a mesh a little so that the level curves of a Strip Field become P-curves of the angle θ
     /// (paper Sec. 3.3, Fig. 17): the field's values stay fixed, the vertices move within a tolerance of the original
-    /// surface. One-shot: solves when Solve is true (no live mode).
+    /// surface. Live like Strip Field (Run: each solution steps within a time budget and outputs the moved surface and
+    /// its deviation as they are) or one-shot (Solve); the session is kept across solutions while the mesh, the field's
+    /// values, θ and Tolerance stay.
     /// </summary>
-    public class ReshapeSurfaceComponent : LamellaComponent
+    public class ReshapeSurfaceComponent : LiveComponent
     {
+        private readonly LiveSessions<SolverSession<ReshapeSolver, ReshapeReport>> sessions = new LiveSessions<SolverSession<ReshapeSolver, ReshapeReport>>();
+
         public ReshapeSurfaceComponent()
             : base("Reshape Surface", "Reshape",
-                "Moves the surface a little so that the level curves of a field become P-curves of θ (paper Sec. 3.3): the field's values stay fixed, the vertices move within Tolerance of the original surface (paper Table 3 weights). For a θ the surface has no family of, or to change θ of an existing design. Solves when Solve is true.",
+                "Moves the surface a little so that the level curves of a field become P-curves of θ (paper Sec. 3.3): the field's values stay fixed, the vertices move within Tolerance of the original surface (paper Table 3 weights). For a θ the surface has no family of, or to change θ of an existing design. Run reshapes live (the surface moves while it steps), Solve to convergence at once.",
                 "StripField")
         {
         }
 
         public override Guid ComponentGuid => new Guid("3f1d2c9e-6a47-4b1e-9c85-0d7e2b4a6f13");
         public override GH_Exposure Exposure => GH_Exposure.secondary;
+
+        protected override ILiveSessions Sessions => sessions;
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
@@ -31,19 +38,21 @@ namespace Lamella.Grasshopper
             pManager.AddNumberParameter("Theta", "θ", "Target angle between the curves' binormals and the surface normal, in degrees, strictly between 0 and 180. Default: the field's θ.", GH_ParamAccess.item);
             pManager[2].Optional = true;
             pManager.AddNumberParameter("Tolerance", "T", "Largest distance of a vertex from the original surface, in percent of the bounding-box diagonal, > 0. Default 1.", GH_ParamAccess.item, 1.0);
-            pManager.AddIntegerParameter("Max Iterations", "I", "The most solver iterations (a count, ≥ 1). Default 300.", GH_ParamAccess.item, 300);
-            pManager.AddBooleanParameter("Solve", "Sv", "True solves within this solution. Default false.", GH_ParamAccess.item, false);
+            pManager.AddIntegerParameter("Max Iterations", "I", "The most solver iterations (a count, ≥ 1); live and one-shot solving stop there with a warning if not converged. Default 300.", GH_ParamAccess.item, 300);
+            pManager.AddBooleanParameter("Solve", "Sv", SolveDescription("the reshape") + " Changing the mesh, the field's values, θ or Tolerance starts over.", GH_ParamAccess.item, false);
+            // After Solve, so that documents saved before Run existed keep their Solve wires.
+            pManager.AddBooleanParameter("Run", "Run", RunDescription("the reshape", "; every output shows the surface as it moves"), GH_ParamAccess.item, false);
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddMeshParameter("Mesh", "M", "The moved surface (the cleaned mesh's vertices and triangles).", GH_ParamAccess.item);
+            pManager.AddMeshParameter("Mesh", "M", "The moved surface (the cleaned mesh's vertices and triangles), updated while Run steps.", GH_ParamAccess.item);
             pManager.AddNumberParameter("Deviation", "D", "Per vertex of the input mesh, its distance from the original surface (NaN at vertices no face uses).", GH_ParamAccess.list);
             pManager.AddNumberParameter("Max Deviation", "MD", "The largest deviation, in document units.", GH_ParamAccess.item);
             pManager.AddTextParameter("Report", "R", "Iterations, angle errors, deviation and edge-length change.", GH_ParamAccess.item);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void SolveLive(IGH_DataAccess DA)
         {
             Mesh input = null;
             if (!DA.GetData(0, ref input) || input == null) return;
@@ -51,19 +60,15 @@ namespace Lamella.Grasshopper
             if (field == null) return;
             double thetaDegrees = field.ThetaDegrees, tolerancePercent = 1.0;
             int maxIterations = 300;
-            bool solveNow = false;
+            bool solveNow = false, run = false;
             DA.GetData(2, ref thetaDegrees);
             DA.GetData(3, ref tolerancePercent);
             DA.GetData(4, ref maxIterations);
             DA.GetData(5, ref solveNow);
+            DA.GetData(6, ref run);
             if (maxIterations < 1)
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Error, "Max Iterations must be at least 1");
-                return;
-            }
-            if (!solveNow)
-            {
-                AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, "set Solve to true to reshape");
                 return;
             }
             CleanMesh clean = CleanMeshInput(input);
@@ -74,23 +79,20 @@ namespace Lamella.Grasshopper
                     "the field has {0} values but the cleaned mesh {1} vertices: connect the mesh the field was solved on", values.Length, clean.VertexCount));
                 return;
             }
-            ReshapeReport report;
-            double[] xyz, deviations;
-            using (LamellaMesh mesh = LamellaMesh.FromArrays(clean.Xyz, clean.Triangles))
-            using (var reshape = new ReshapeSolver(mesh, values, thetaDegrees, tolerancePercent / 100.0, true))
+            var fingerprint = new List<double>(values) { values.Length, thetaDegrees, tolerancePercent };
+            string signature = Signature.Of(clean.Xyz, clean.Triangles, fingerprint.ToArray());
+            SolverSession<ReshapeSolver, ReshapeReport> session = LiveSession(DA, sessions, signature, run, solveNow, "reshape", () =>
             {
-                report = reshape.Report;
-                while (report.Iterations < maxIterations && !report.IsConverged)
+                using (LamellaMesh mesh = LamellaMesh.FromArrays(clean.Xyz, clean.Triangles))
                 {
-                    if (GH_Document.IsEscapeKeyDown()) break;
-                    report = reshape.Step((int)Math.Min(10, maxIterations - report.Iterations));
+                    return SolverSession.Of(new ReshapeSolver(mesh, values, thetaDegrees, tolerancePercent / 100.0, true), signature);
                 }
-                xyz = reshape.Positions();
-                deviations = reshape.Deviations();
-            }
-            if (!report.IsConverged)
-                AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, string.Format(CultureInfo.InvariantCulture, "not converged after {0} iterations", report.Iterations));
-            Message = string.Format(CultureInfo.InvariantCulture, "max deviation {0:0.###} · θ error {1:0.##}° RMS", report.MaxDeviation, report.AngleErrorRmsDegrees);
+            });
+            if (session == null) return;
+            ReshapeReport report = Advance(session, run, solveNow, maxIterations).Outcome.Report;
+            double[] xyz = session.Solver.Positions(), deviations = session.Solver.Deviations();
+            Message = string.Format(CultureInfo.InvariantCulture, "{0}iteration {1} · max deviation {2:0.###} · θ error {3:0.##}° RMS",
+                report.IsConverged ? "converged · " : "", report.Iterations, report.MaxDeviation, report.AngleErrorRmsDegrees);
             DA.SetData(0, RhinoConversion.TriangleMesh(xyz, clean.Triangles));
             DA.SetDataList(1, clean.ToInputVertices(deviations, 1, double.NaN));
             DA.SetData(2, report.MaxDeviation);

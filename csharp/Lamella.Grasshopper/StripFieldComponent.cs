@@ -20,7 +20,7 @@ namespace Lamella.Grasshopper
     /// input (Sec. 3.2.2), or is the height along Direction; with none of them the library's start search chooses it
     /// (one candidate per live solution, all at once with Solve) and the message names the chosen start.
     /// </summary>
-    public class StripFieldComponent : LamellaComponent
+    public class StripFieldComponent : LiveComponent
     {
         /// <summary>The description of a mesh input, shared with Trace P-Curve.</summary>
         internal const string MeshDescription =
@@ -30,11 +30,7 @@ namespace Lamella.Grasshopper
         private const int PreviewLevels = 12;
 
         private readonly FieldSessions sessions = new FieldSessions();
-        private readonly LiveSolve live = new LiveSolve(FieldStepping.StopwatchClock());
-        private int runningAtStart, converged;
-        private bool stepping;
-        /// <summary>Whether the running iteration holds a session (an error after that keeps it: it is already an output).</summary>
-        private bool hasField;
+        private int converged;
         private string lastMessage;
 
         public StripFieldComponent()
@@ -62,8 +58,8 @@ namespace Lamella.Grasshopper
             pManager[6].Optional = true;
             pManager.AddIntegerParameter("Max Iterations", "I", "The most solver iterations a field may run (a count, ≥ 1); live and one-shot solving stop there with a warning if not converged. Default 1000.", GH_ParamAccess.item, 1000);
             pManager.AddBooleanParameter("Reset", "R", "True starts the fields over from their start fields. Default false.", GH_ParamAccess.item, false);
-            pManager.AddBooleanParameter("Run", "Run", "True solves live: each solution steps the fields for about " + LiveSolve.DefaultBudgetMs.ToString(CultureInfo.InvariantCulture) + " ms and schedules the next, until converged; Escape stops (switch Run off and on to continue). Default false.", GH_ParamAccess.item, false);
-            pManager.AddBooleanParameter("Solve", "Sv", "True solves each field to convergence within this solution (one-shot, for Hops, Rhino.Compute and optimisers; Escape cancels). Default false.", GH_ParamAccess.item, false);
+            pManager.AddBooleanParameter("Run", "Run", RunDescription("the fields", ""), GH_ParamAccess.item, false);
+            pManager.AddBooleanParameter("Solve", "Sv", SolveDescription("each field"), GH_ParamAccess.item, false);
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -79,42 +75,25 @@ namespace Lamella.Grasshopper
             pManager.AddVectorParameter("Binormals", "B", "The unit binormal of the level curve at each vertex of the input mesh (zero at boundary and singular vertices).", GH_ParamAccess.list);
         }
 
+        protected override ILiveSessions Sessions => sessions;
+
+        protected override string NotConvergedHint => "raise it, or check θ and the start field";
+
         protected override void BeginSolution()
         {
-            live.SolutionStarted();
-            sessions.BeginSolution();
+            base.BeginSolution();
             converged = 0;
-            stepping = false;
             lastMessage = null;
-            runningAtStart = sessions.RunningCount();
         }
 
         protected override void EndSolution()
         {
-            // Fields of iterations this solution did not reach belong to inputs that are gone.
-            sessions.EndSolution();
+            base.EndSolution();
             Message = sessions.Iterations == 1 ? lastMessage : string.Format(CultureInfo.InvariantCulture, "{0} fields · {1} converged", sessions.Iterations, converged);
-            if (stepping && !live.Cancelled) ScheduleNextStep(live.NextDelayMs());
         }
 
-        protected override void ReleaseNative() => sessions.Clear();
-
-        protected override void Solve(IGH_DataAccess DA)
-        {
-            hasField = false;
-            try
-            {
-                SolveField(DA);
-            }
-            finally
-            {
-                // An iteration without a field (missing or bad inputs, a failed start) releases the one it held.
-                if (!hasField) sessions.Skip(DA.Iteration);
-            }
-        }
-
-        /// <summary>One iteration; sets <see cref="hasField"/> once it holds its field's session.</summary>
-        private void SolveField(IGH_DataAccess DA)
+        /// <summary>One iteration: the field of its inputs, stepped as Run and Solve ask.</summary>
+        protected override void SolveLive(IGH_DataAccess DA)
         {
             int iteration = DA.Iteration;
             Mesh mesh = null;
@@ -154,19 +133,15 @@ namespace Lamella.Grasshopper
             }
             Vector3d? height = directionGiven ? direction : (Vector3d?)null;
             string signature = Signature.Of(clean.Xyz, clean.Triangles, Fingerprint(thetaDegrees, height, spacing, weights, guides, strokes));
-            FieldSession session = sessions.Session(iteration, clean.Xyz, clean.Triangles, signature, reset,
-                native => Start(native, clean, signature, thetaDegrees, height, spacing, weights, guides, strokes));
-            hasField = true;
+            FieldSession session = Hold(sessions.Session(iteration, clean.Xyz, clean.Triangles, signature, reset,
+                native => Start(native, clean, signature, thetaDegrees, height, spacing, weights, guides, strokes)));
             if (guides != null && strokes == null && guides.ThetaDegrees != session.ThetaDegrees)
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, string.Format(CultureInfo.InvariantCulture,
                     "the guides were traced with θ = {0}°, the field is solved for θ = {1}°", guides.ThetaDegrees, session.ThetaDegrees));
             }
 
-            if (!run) live.RunSwitchedOff();
-            // Grasshopper reports any Escape since it was last asked: forget one pressed before Run was switched on.
-            else if (live.RunSwitchedOn()) GH_Document.IsEscapeKeyDown();
-            FieldReport report = Advance(session, run, solveNow, maxIterations);
+            FieldReport report = Advance(session, run, solveNow, maxIterations).Outcome.Report;
             if (session.IsSearching)
             {
                 // No field yet: say how far the search is; the next slices (Run) or Solve continue it.
@@ -216,46 +191,6 @@ namespace Lamella.Grasshopper
             foreach (int v in solver.SingularVertices()) singular.Add(RhinoConversion.Point(clean.Xyz, v));
             DA.SetDataList(7, singular);
             DA.SetDataList(8, RhinoConversion.Vectors(clean.ToInputVertices(solver.Binormals(), 3, 0)));
-        }
-
-        /// <summary>
-        /// Steps the field as the inputs ask: to convergence (Solve), within this solution's share of the live budget
-        /// (Run, unless Escape stopped it), or not at all; says so in messages. Returns the field's state.
-        /// </summary>
-        private FieldReport Advance(FieldSession session, bool run, bool solveNow, int maxIterations)
-        {
-            Func<bool> escape = GH_Document.IsEscapeKeyDown;
-            SteppingOutcome outcome;
-            if (solveNow)
-            {
-                outcome = session.ToConvergence(maxIterations, escape);
-                if (outcome.Stop == SteppingStop.Converged && outcome.Iterations > 0)
-                {
-                    AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, string.Format(CultureInfo.InvariantCulture,
-                        "solved in {0} iterations, {1:0} ms", outcome.Iterations, outcome.ElapsedMs));
-                }
-            }
-            else if (run && !live.Cancelled)
-            {
-                outcome = session.StepWithin(live.BudgetPerSession(runningAtStart), maxIterations, escape, FieldStepping.StopwatchClock());
-                if (outcome.Stop == SteppingStop.TimeBudget) stepping = true;
-            }
-            else
-            {
-                if (run) AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, "stopped by Escape: switch Run off and on to continue");
-                return session.Report;
-            }
-            if (outcome.Stop == SteppingStop.Cancelled)
-            {
-                live.Cancel();
-                AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, "stopped by Escape: switch Run (or Solve) off and on to continue");
-            }
-            else if (outcome.Stop == SteppingStop.IterationCap)
-            {
-                AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, string.Format(CultureInfo.InvariantCulture,
-                    "not converged after {0} iterations (Max Iterations); raise it, or check θ and the start field", outcome.Report.Iterations));
-            }
-            return outcome.Report;
         }
 
         /// <summary>Null when the plain inputs are usable, else what is wrong (θ, mesh, direction, guides and strokes are checked natively).</summary>
@@ -322,14 +257,6 @@ namespace Lamella.Grasshopper
             }
             return start == null ? FieldSession.Search(mesh, parameters, signature) : FieldSession.Start(mesh, start, parameters, signature);
         }
-
-        private void ScheduleNextStep(int delayMs)
-        {
-            GH_Document document = OnPingDocument();
-            document?.ScheduleSolution(delayMs, new GH_Document.GH_ScheduleDelegate(ExpireForNextStep));
-        }
-
-        private void ExpireForNextStep(GH_Document document) => ExpireSolution(false);
 
         /// <summary>Stores each field's values, θ, parameters, report and input signature (see <see cref="FieldArchive"/>), not the whole native session.</summary>
         public override bool Write(GH_IWriter writer)

@@ -4,6 +4,7 @@ using Grasshopper;
 using Grasshopper.Kernel;
 using Grasshopper.Kernel.Data;
 using Lamella.Conversion;
+using Lamella.Hosting;
 
 namespace Lamella.Grasshopper
 {
@@ -13,7 +14,7 @@ namespace Lamella.Grasshopper
     /// together, each toward its θ, held to F + G + H = 0 (Eq. 18), every pair crossing at no less than a minimum angle.
     /// Strips are built on the web's even-pace levels of all three; the web where the curves cross (triangles, or with
     /// Kagome triangles and hexagons), its polylines per family and the nodes of every pair of crossing strips come out
-    /// with them. One-shot like Strip Net: solves when Solve is true.
+    /// with them. Live or one-shot like Strip Net (Run: the level curves of the current fields while it steps).
     /// </summary>
     public class StripWebComponent : GridshellComponent
     {
@@ -31,7 +32,7 @@ namespace Lamella.Grasshopper
 
         public StripWebComponent()
             : base("Strip Web", "Web",
-                "A gridshell of three strip families, a 3-web (paper Sec. 4.2): the fields of the first two families and of the third, the diagonal one, optimised together toward their angles θ (0° and 180° asymptotic curves, 90° geodesics, others pseudo-geodesics) with F + G + H = 0 at every vertex, every two crossing at no less than Min Angle; rectifying strips on all three at one even level spacing, the web where their curves cross (triangles; with Kagome the third family shifted by half a spacing: triangles and hexagons, each hexagon output as a fan of four triangles), its polylines and the nodes where two strips cross. Solves when Solve is true.",
+                "A gridshell of three strip families, a 3-web (paper Sec. 4.2): the fields of the first two families and of the third, the diagonal one, optimised together toward their angles θ (0° and 180° asymptotic curves, 90° geodesics, others pseudo-geodesics) with F + G + H = 0 at every vertex, every two crossing at no less than Min Angle; rectifying strips on all three at one even level spacing, the web where their curves cross (triangles; with Kagome the third family shifted by half a spacing: triangles and hexagons, each hexagon output as a fan of four triangles), its polylines and the nodes where two strips cross. Run solves live (the level curves move while it steps), Solve solves to convergence at once.",
                 "StripWeb")
         {
         }
@@ -41,7 +42,7 @@ namespace Lamella.Grasshopper
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
-            RegisterGridshellInputs(pManager,
+            RegisterGridshellInputs(pManager, "web",
                 new[]
                 {
                     "Angle of the first family (F), in degrees, in [0, 180]: 0 and 180 asymptotic curves, 90 geodesics. Default 0.",
@@ -56,15 +57,14 @@ namespace Lamella.Grasshopper
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddCurveParameter("Curves", "C", "The strips' centre lines: branch {0} the first family, {1} the second, {2} the third.", GH_ParamAccess.tree);
-            pManager.AddMeshParameter("Strip Meshes", "S", "One planar-quad mesh per strip: branch {0} the first family, {1} the second, {2} the third.", GH_ParamAccess.tree);
-            pManager.AddMeshParameter("Web", "Wb", "The web: a vertex where the level curves of two or three families cross, triangles between them; with Kagome also hexagons, each as a fan of four triangles from its first corner (a mesh holds no hexagons).", GH_ParamAccess.item);
-            pManager.AddCurveParameter("Polylines", "P", "The web's polylines along each family's levels, through its vertices: branch {0} the first family, {1} the second, {2} the third.", GH_ParamAccess.tree);
-            pManager.AddPointParameter("Nodes", "X", "Where a strip of one family crosses a strip of another (at a vertex of three families, one node per pair).", GH_ParamAccess.list);
-            pManager.AddVectorParameter("Node Axes", "NA", "Per node, the unit node axis (the mean of the two strips' rulings there).", GH_ParamAccess.list);
-            pManager.AddTextParameter("Node Data", "D", "Per node: the two families, their strips (S<i> of the first family, T<j> of the second, U<k> of the third), the arc length of the node along each (where its hole goes on the flat strip), the angle between the two rulings (0° for a torsion-free node) and, per strip, the angle atan |k| between its binormal and the ruling of its rectifying developable (Sec. 5.1), flagged where the ruling's singular point is near the strip.", GH_ParamAccess.list);
-            pManager.AddBooleanParameter("Acceptable", "A", "Per family, true when its strips meet θ within the library's tolerance without flipped quads.", GH_ParamAccess.list);
-            pManager.AddTextParameter("Report", "R", "Iterations, each family's angle error, how far F + G + H = 0 (Eq. 18) holds, the crossing angles of every pair and each family's verdict.", GH_ParamAccess.item);
+            RegisterGridshellOutputs(pManager, "branch {0} the first family, {1} the second, {2} the third", " at the web's levels", p =>
+            {
+                p.AddMeshParameter("Web", "Wb", "The web: a vertex where the level curves of two or three families cross, triangles between them; with Kagome also hexagons, each as a fan of four triangles from its first corner (a mesh holds no hexagons)." + BuiltOnceStopped, GH_ParamAccess.item);
+                p.AddCurveParameter("Polylines", "P", "The web's polylines along each family's levels, through its vertices: branch {0} the first family, {1} the second, {2} the third." + BuiltOnceStopped, GH_ParamAccess.tree);
+            },
+                "X", "NA", "Where a strip of one family crosses a strip of another (at a vertex of three families, one node per pair).",
+                "the two families, their strips (S<i> of the first family, T<j> of the second, U<k> of the third)",
+                "Iterations, each family's angle error, how far F + G + H = 0 (Eq. 18) holds, the crossing angles of every pair and each family's verdict");
         }
 
         /// <summary>A web node as text: its families (1 to 3) and <see cref="GridshellComponent.NodeText"/> with each family's strip prefix.</summary>
@@ -72,23 +72,26 @@ namespace Lamella.Grasshopper
             string.Format(CultureInfo.InvariantCulture, "families {0} and {1}: {2}", node.Families[0] + 1, node.Families[1] + 1,
                 NodeText(node, StripPrefixes[node.Families[0]], StripPrefixes[node.Families[1]]));
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void SolveLive(IGH_DataAccess DA)
         {
-            GridshellInputs inputs = ReadInputs(DA, DefaultThetas, 1, "web");
+            GridshellInputs inputs = ReadInputs(DA, DefaultThetas, 1);
             if (inputs == null) return;
             bool kagome = false;
             DA.GetData(inputs.FirstExtra, ref kagome);
             double[] thetas = inputs.Thetas;
             int count = inputs.Count;
-            LamellaMesh mesh;
-            double[][] start = DefaultStart(DA, inputs, out mesh);
-            NetSolver net = NetSolver.Web(mesh, thetas[0], thetas[1], thetas[2], start[0], start[1], inputs.MinAngle);
-            NetReport report = SolveNet(DA, net, inputs.MaxIterations);
+            SolverSession<NetSolver, NetReport> session = NetSession(DA, inputs, "web",
+                (mesh, start) => NetSolver.Web(mesh, thetas[0], thetas[1], thetas[2], start[0], start[1], inputs.MinAngle));
+            if (session == null) return;
+            NetSolver net = session.Solver;
+            Func<int, LevelCurves> curves = k => LevelCurves.OfWeb(net, k, count, count, kagome, 0.0);
+            NetReport report = AdvanceOrShowIterate(DA, session, inputs, curves, 8, r => net.WebReport().Describe(r, inputs.MinAngle));
+            if (report == null) return;
             WebReport webReport = net.WebReport();
             if (webReport.ResidualMax > MaxResidual)
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, string.Format(CultureInfo.InvariantCulture,
                     "the fields leave F + G + H = 0 by {0:0.#e+0} of their range (above {1:0e+0}): the third family's strips are not on the diagonals", webReport.ResidualMax, MaxResidual));
-            FamilyStrips strips = BuildStrips(DA, inputs, k => LevelCurves.OfWeb(net, k, count, count, kagome, 0.0));
+            FamilyStrips strips = BuildStrips(DA, inputs, curves);
             StripWeb web = Keep(DA, new StripWeb(net, count, count, kagome, strips.Strips[0], strips.Strips[1], strips.Strips[2]));
             double[] xyz = web.Vertices();
             int[][] faces = web.Faces();

@@ -166,7 +166,7 @@ namespace Lamella.Tests
                     Assert.AreEqual(curvePoints.Length, points.Length);
                     Assert.Less(points.Zip(curvePoints, (p, q) => Math.Abs(p - q)).Max(), 1e-9, "the same level curves");
                 }
-                SteppingOutcome outcome = field.StepWithin(100, 1000, () => false, FieldSteppingTests.TickingClock(1));
+                SteppingOutcome<FieldReport> outcome = field.StepWithin(100, 1000, () => false, FieldSteppingTests.TickingClock(1));
                 Assert.AreEqual(SteppingStop.Converged, outcome.Stop, "converged before saving: not solved again");
                 Assert.AreEqual(0, outcome.Iterations);
             }
@@ -203,7 +203,7 @@ namespace Lamella.Tests
                     session = sessions.Session(0, second.Xyz, second.Triangles, SignatureOf(second, 60), false, search);
                     bool searching = session.IsSearching;
                     int probed = session.Candidates.Length;
-                    SteppingOutcome outcome = session.StepWithin(80, 1000, () => false, FieldSteppingTests.TickingClock(1));
+                    SteppingOutcome<FieldReport> outcome = session.StepWithin(80, 1000, () => false, FieldSteppingTests.TickingClock(1));
                     sessions.EndSolution();
                     slices++;
                     if (!searching) break;
@@ -235,7 +235,7 @@ namespace Lamella.Tests
                 Assert.AreEqual(before + 1, Library.DebugLiveHandles, "the search was released, its field kept");
 
                 // Then the field converges live; its iterations start with the field.
-                SteppingOutcome last = default(SteppingOutcome);
+                SteppingOutcome<FieldReport> last = default(SteppingOutcome<FieldReport>);
                 for (int i = 0; i < 400 && last.Stop != SteppingStop.Converged; i++)
                 {
                     last = session.StepWithin(80, 1000, () => false, FieldSteppingTests.TickingClock(10));
@@ -256,7 +256,7 @@ namespace Lamella.Tests
             {
                 using (FieldSession session = FieldSession.Search(mesh, parameters, "s"))
                 {
-                    SteppingOutcome outcome = session.ToConvergence(1000, () => false);
+                    SteppingOutcome<FieldReport> outcome = session.ToConvergence(1000, () => false);
                     Assert.AreEqual(SteppingStop.Converged, outcome.Stop);
                     Assert.IsFalse(session.IsSearching);
                     Assert.IsTrue(session.ChosenStart.HasValue);
@@ -269,7 +269,7 @@ namespace Lamella.Tests
                 using (FieldSession session = FieldSession.Search(mesh, parameters, "s"))
                 {
                     int asked = 0;
-                    SteppingOutcome outcome = session.ToConvergence(1000, () => ++asked > 2);
+                    SteppingOutcome<FieldReport> outcome = session.ToConvergence(1000, () => ++asked > 2);
                     Assert.AreEqual(SteppingStop.Cancelled, outcome.Stop);
                     Assert.IsTrue(session.IsSearching);
                     Assert.AreEqual(2, session.Candidates.Length, "two candidates, then Escape");

@@ -34,7 +34,7 @@ namespace Lamella.Tests
             using (FieldSolver field = NewField())
             {
                 // Each iteration "takes" 40 ms: after two (80 ms) a third would end at 120 > 100.
-                SteppingOutcome outcome = FieldStepping.StepWithin(field, 100, 1000, () => false, TickingClock(40));
+                SteppingOutcome<FieldReport> outcome = FieldStepping.StepWithin(field, 100, 1000, () => false, TickingClock(40));
                 Assert.AreEqual(SteppingStop.TimeBudget, outcome.Stop);
                 Assert.AreEqual(2, outcome.Iterations);
                 Assert.AreEqual(2UL, field.Report.Iterations);
@@ -59,7 +59,7 @@ namespace Lamella.Tests
                 double oneIteration = watch.Elapsed.TotalMilliseconds;
                 Assert.AreEqual(2UL, single.Iterations);
                 double budget = Math.Max(30, 4 * oneIteration);
-                SteppingOutcome outcome = FieldStepping.StepWithin(field, budget, 1000, () => false, FieldStepping.StopwatchClock());
+                SteppingOutcome<FieldReport> outcome = FieldStepping.StepWithin(field, budget, 1000, () => false, FieldStepping.StopwatchClock());
                 Console.WriteLine("  one iteration {0:0.0} ms; budget {1:0} ms: {2} iterations in {3:0.0} ms", oneIteration, budget, outcome.Iterations, outcome.ElapsedMs);
                 Assert.AreEqual(SteppingStop.TimeBudget, outcome.Stop);
                 Assert.GreaterOrEqual(outcome.Iterations, 2);
@@ -75,7 +75,7 @@ namespace Lamella.Tests
             using (FieldSolver field = NewField())
             {
                 int asked = 0;
-                SteppingOutcome outcome = FieldStepping.StepWithin(field, double.PositiveInfinity, 1000, () => ++asked > 3, FieldStepping.StopwatchClock());
+                SteppingOutcome<FieldReport> outcome = FieldStepping.StepWithin(field, double.PositiveInfinity, 1000, () => ++asked > 3, FieldStepping.StopwatchClock());
                 Assert.AreEqual(SteppingStop.Cancelled, outcome.Stop);
                 Assert.AreEqual(3, outcome.Iterations);
                 Assert.AreEqual(4, asked);
@@ -87,7 +87,7 @@ namespace Lamella.Tests
         {
             using (FieldSolver field = NewField())
             {
-                SteppingOutcome outcome = FieldStepping.ToConvergence(field, 5, () => false);
+                SteppingOutcome<FieldReport> outcome = FieldStepping.ToConvergence(field, 5, () => false);
                 Assert.AreEqual(SteppingStop.IterationCap, outcome.Stop);
                 Assert.AreEqual(5UL, outcome.Report.Iterations);
                 Assert.IsFalse(outcome.Report.IsConverged);
@@ -101,7 +101,7 @@ namespace Lamella.Tests
             using (FieldSolver field = NewField())
             {
                 Assert.Greater(field.Report.AngleErrorMaxDegrees, 5.0, "the start is not the answer");
-                SteppingOutcome outcome = FieldStepping.ToConvergence(field, 300, () => false);
+                SteppingOutcome<FieldReport> outcome = FieldStepping.ToConvergence(field, 300, () => false);
                 Console.WriteLine("  one-shot: {0} iterations, {1:0} ms, {2}", outcome.Iterations, outcome.ElapsedMs, outcome.Report);
                 Assert.AreEqual(SteppingStop.Converged, outcome.Stop);
                 Assert.IsTrue(outcome.Report.IsConverged);

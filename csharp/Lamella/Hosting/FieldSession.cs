@@ -9,7 +9,7 @@ namespace Lamella.Hosting
     /// search ends), or restored from a <see cref="SavedField"/>; a restored session shows the saved report and values
     /// until it is stepped again, and a field saved converged is not stepped again (as before saving).
     /// </summary>
-    public sealed class FieldSession : IDisposable
+    public sealed class FieldSession : ISteppedSession<FieldReport>
     {
         private FieldReport? savedReport;
         private double[] savedValues;
@@ -46,6 +46,9 @@ namespace Lamella.Hosting
 
         /// <summary>The state: the saved report of a restored session until it is stepped, else the session's own (all zero while searching).</summary>
         public FieldReport Report => savedReport ?? (solver != null ? solver.Report : default(FieldReport));
+
+        /// <summary>Whether the field has converged (a live host no longer steps it).</summary>
+        public bool IsConverged => Report.IsConverged;
 
         /// <summary>The field, one value per vertex (exactly the saved values of a restored session until it is stepped).</summary>
         public double[] Values()
@@ -97,11 +100,11 @@ namespace Lamella.Hosting
         /// without stepping. Throws the binding's <see cref="LamellaException"/> when every candidate was rejected
         /// (<see cref="Status.SingularField"/>; the session keeps its candidates).
         /// </summary>
-        public SteppingOutcome StepWithin(double budgetMs, long iterationCap, Func<bool> cancelRequested, Func<double> clockMs)
+        public SteppingOutcome<FieldReport> StepWithin(double budgetMs, long iterationCap, Func<bool> cancelRequested, Func<double> clockMs)
         {
             if (savedReport.HasValue && savedReport.Value.IsConverged)
             {
-                return new SteppingOutcome { Report = savedReport.Value, Stop = SteppingStop.Converged };
+                return new SteppingOutcome<FieldReport> { Report = savedReport.Value, TotalIterations = (long)savedReport.Value.Iterations, Stop = SteppingStop.Converged };
             }
             FieldStepping.CheckArguments(budgetMs, iterationCap, cancelRequested, clockMs);
             savedReport = null;
@@ -115,7 +118,7 @@ namespace Lamella.Hosting
                 {
                     if (cancelRequested())
                     {
-                        return new SteppingOutcome { Report = Report, Stop = SteppingStop.Cancelled, ElapsedMs = clockMs() - start };
+                        return new SteppingOutcome<FieldReport> { Report = Report, Stop = SteppingStop.Cancelled, ElapsedMs = clockMs() - start };
                     }
                     // Complete (also when a former call found every candidate rejected): take the winner's field.
                     if (search.IsComplete || !search.Step()) TakeSearchField();
@@ -123,9 +126,9 @@ namespace Lamella.Hosting
                 }
                 while (oneShot && search != null);
                 searchMs = clockMs() - start;
-                if (!oneShot) return new SteppingOutcome { Report = Report, Stop = SteppingStop.TimeBudget, ElapsedMs = searchMs };
+                if (!oneShot) return new SteppingOutcome<FieldReport> { Report = Report, Stop = SteppingStop.TimeBudget, ElapsedMs = searchMs };
             }
-            SteppingOutcome outcome = FieldStepping.StepWithin(solver, budgetMs, iterationCap, cancelRequested, clockMs);
+            SteppingOutcome<FieldReport> outcome = FieldStepping.StepWithin(solver, budgetMs, iterationCap, cancelRequested, clockMs);
             outcome.ElapsedMs += searchMs;
             return outcome;
         }
@@ -143,7 +146,7 @@ namespace Lamella.Hosting
         }
 
         /// <summary>Steps to convergence within this call (see <see cref="StepWithin"/> with an infinite budget), same rule for restored sessions.</summary>
-        public SteppingOutcome ToConvergence(long iterationCap, Func<bool> cancelRequested) =>
+        public SteppingOutcome<FieldReport> ToConvergence(long iterationCap, Func<bool> cancelRequested) =>
             StepWithin(double.PositiveInfinity, iterationCap, cancelRequested, FieldStepping.StopwatchClock());
 
         /// <summary>What a document keeps of this session (see <see cref="SavedField"/>); a session still searching has nothing to keep.</summary>

@@ -1,6 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.Linq;
 
 namespace Lamella.Hosting
 {
@@ -12,27 +11,26 @@ namespace Lamella.Hosting
     /// solution no longer reaches are released at its end. Fields saved in a document are restored, without solving,
     /// by the first solution whose inputs match them.
     /// </summary>
-    public sealed class FieldSessions : IDisposable
+    public sealed class FieldSessions : ILiveSessions, IDisposable
     {
-        private readonly IterationSlots<FieldSession> slots = new IterationSlots<FieldSession>();
+        private readonly LiveSessions<FieldSession> sessions = new LiveSessions<FieldSession>();
         private Dictionary<int, SavedField> saved;
         private byte[] savedBytes;
-        private int iterations;
 
         /// <summary>The number of sessions held.</summary>
-        public int Count => slots.Stored().Count();
+        public int Count => sessions.Count;
 
         /// <summary>The session of iteration <paramref name="iteration"/>, or null.</summary>
-        public FieldSession this[int iteration] => slots[iteration];
+        public FieldSession this[int iteration] => sessions[iteration];
 
         /// <summary>The iterations the current solution has reached so far (the highest + 1).</summary>
-        public int Iterations => iterations;
+        public int Iterations => sessions.Iterations;
 
         /// <summary>Sessions not converged (the ones a live solve still steps).</summary>
-        public int RunningCount() => slots.Stored().Count(slot => !slot.Value.Report.IsConverged);
+        public int RunningCount() => sessions.RunningCount();
 
         /// <summary>A solution starts.</summary>
-        public void BeginSolution() => iterations = 0;
+        public void BeginSolution() => sessions.BeginSolution();
 
         /// <summary>
         /// The session of <paramref name="iteration"/> for inputs with <paramref name="signature"/> on the mesh
@@ -42,32 +40,20 @@ namespace Lamella.Hosting
         /// </summary>
         public FieldSession Session(int iteration, double[] xyz, int[] triangles, string signature, bool reset, Func<LamellaMesh, FieldSession> start)
         {
-            if (signature == null) throw new ArgumentNullException(nameof(signature));
             if (start == null) throw new ArgumentNullException(nameof(start));
-            Reached(iteration);
-            FieldSession session = slots[iteration];
-            if (!reset && session != null && session.Signature == signature) return session;
-            using (LamellaMesh mesh = LamellaMesh.FromArrays(xyz, triangles))
+            return sessions.Session(iteration, signature, reset, () =>
             {
-                SavedField stored;
-                bool restore = !reset && saved != null && saved.TryGetValue(iteration, out stored) && stored.Signature == signature && stored.Values.Length == mesh.VertexCount;
-                session = restore ? FieldSession.Restore(mesh, saved[iteration]) : start(mesh);
-                if (session == null || session.Signature != signature)
+                using (LamellaMesh mesh = LamellaMesh.FromArrays(xyz, triangles))
                 {
-                    session?.Dispose();
-                    throw new InvalidOperationException("the started session does not carry the signature asked for");
+                    SavedField stored;
+                    bool restore = !reset && saved != null && saved.TryGetValue(iteration, out stored) && stored.Signature == signature && stored.Values.Length == mesh.VertexCount;
+                    return restore ? FieldSession.Restore(mesh, saved[iteration]) : start(mesh);
                 }
-            }
-            slots.Set(iteration, session);
-            return session;
+            });
         }
 
         /// <summary>Iteration <paramref name="iteration"/> ran without a field (missing or bad inputs): its session, if any, is released.</summary>
-        public void Skip(int iteration)
-        {
-            Reached(iteration);
-            slots.Set(iteration, null);
-        }
+        public void Skip(int iteration) => sessions.Skip(iteration);
 
         /// <summary>
         /// The solution ended: sessions of iterations it did not reach are released, and saved fields not restored by now
@@ -75,7 +61,7 @@ namespace Lamella.Hosting
         /// </summary>
         public void EndSolution()
         {
-            slots.Trim(iterations);
+            sessions.EndSolution();
             saved = null;
             savedBytes = null;
         }
@@ -89,7 +75,7 @@ namespace Lamella.Hosting
         {
             if (Count == 0) return savedBytes;
             var fields = new List<SavedField>();
-            foreach (KeyValuePair<int, FieldSession> slot in slots.Stored())
+            foreach (KeyValuePair<int, FieldSession> slot in sessions.Stored())
             {
                 if (!slot.Value.IsSearching) fields.Add(slot.Value.Save(slot.Key));
             }
@@ -108,15 +94,9 @@ namespace Lamella.Hosting
         }
 
         /// <summary>Releases every session (the component leaves its document, or the document closes).</summary>
-        public void Clear() => slots.Clear();
+        public void Clear() => sessions.Clear();
 
         /// <summary>Same as <see cref="Clear"/>.</summary>
         public void Dispose() => Clear();
-
-        private void Reached(int iteration)
-        {
-            if (iteration < 0) throw new ArgumentOutOfRangeException(nameof(iteration));
-            iterations = Math.Max(iterations, iteration + 1);
-        }
     }
 }

@@ -38,6 +38,9 @@ namespace Lamella.Hosting
         /// <summary>Solver time per solution, shared by the running sessions.</summary>
         public double BudgetMs { get; }
 
+        /// <summary>The clock the pace is timed by, in milliseconds (also the one to time the stepping by).</summary>
+        public Func<double> ClockMs => clockMs;
+
         /// <summary>True after <see cref="Cancel"/> until <see cref="RunSwitchedOff"/>: no stepping, no scheduling.</summary>
         public bool Cancelled { get; private set; }
 
