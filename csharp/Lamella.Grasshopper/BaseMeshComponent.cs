@@ -6,56 +6,141 @@ using Grasshopper.Kernel;
 using Grasshopper.Kernel.Data;
 using Lamella.Conversion;
 using Lamella.Hosting;
+using Rhino.Geometry;
 
 namespace Lamella.Grasshopper
 {
     /// <summary>
-    /// What Optimise Net and Optimise Web share: a base-mesh session (paper Sec. 3.5) stepped within one solution, the
-    /// default strip width, and each family's strips with their verdicts.
+    /// What Optimise Net, Torsion-Free Net and Optimise Web share: a base-mesh session (paper Sec. 3.5) per iteration,
+    /// kept across solutions while the cleaned reference, the net or web and its targets stay, solved live (Run: each
+    /// solution steps it within a time budget and outputs the current iterate) or within one solution (Solve); once it
+    /// has converged or stopped, each family's strips with their verdicts (building them every solution would cost about
+    /// as much as an iteration or two, and judge strips against targets not met yet).
     /// </summary>
-    public abstract class BaseMeshComponent : LamellaComponent
+    public abstract class BaseMeshComponent : LiveComponent
     {
+        private readonly LiveSessions<SolverSession<BaseMeshRun, BaseMeshReport>> sessions = new LiveSessions<SolverSession<BaseMeshRun, BaseMeshReport>>();
+
         protected BaseMeshComponent(string name, string nickname, string description, string iconName)
             : base(name, nickname, description, iconName)
         {
         }
 
+        protected override ILiveSessions Sessions => sessions;
+
+        /// <summary>The end of the descriptions of the outputs built only once the optimisation has converged or stopped.</summary>
+        protected const string BuiltOnceStopped = " Empty while Run steps: built once the optimisation converges or stops.";
+
+        /// <summary>The end of the descriptions of the outputs that show the current iterate.</summary>
+        protected const string UpdatedWhileRunning = " Updated every solution while Run steps.";
+
         /// <summary>
-        /// <paramref name="width"/> when it was given, else the default strip width for the net's vertices
-        /// <paramref name="xyz"/>, named in a remark.
+        /// Registers Max Iterations, Width (optional) and Solve, the inputs every base-mesh component has after its own;
+        /// <paramref name="design"/> names what is optimised ("net", "web"). <see cref="ReadInputs"/> reads them.
         /// </summary>
-        protected double StripWidth(bool widthGiven, double width, double[] xyz)
+        protected static void RegisterSolveInputs(GH_InputParamManager pManager, string design)
         {
-            if (widthGiven) return width;
-            width = StripDefaults.Width(xyz);
-            AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, string.Format(CultureInfo.InvariantCulture,
-                "Width not set: {0:G6} ({1}; about {2:0.#} % of the net's extent)", width,
-                RhinoConversion.DocumentUnits() ?? "document units", 100 * StripDefaults.WidthFraction));
-            return width;
+            pManager.AddIntegerParameter("Max Iterations", "I", "The most solver iterations (a count, ≥ 1); live and one-shot solving stop there with a warning if not converged. Default 300.", GH_ParamAccess.item, 300);
+            int width = pManager.AddNumberParameter("Width", "W", "Width of each flat strip, in document units, > 0. Default: a round number near 2 % of the " + design + "'s extent (named in a remark).", GH_ParamAccess.item);
+            pManager[width].Optional = true;
+            pManager.AddBooleanParameter("Solve", "Sv", SolveDescription("the optimisation") + " Changing the reference, the " + design + " or its targets starts over; a higher Max Iterations continues, Width only rebuilds the strips.", GH_ParamAccess.item, false);
         }
 
-        /// <summary>Steps <paramref name="solver"/> until it converges, <paramref name="maxIterations"/> or Escape; a warning when it did not converge.</summary>
-        protected BaseMeshReport SolveBaseMesh(BaseMeshSolver solver, int maxIterations)
+        /// <summary>
+        /// Registers Run, the last input (so that documents saved before it existed keep their wires); <paramref name="shows"/>
+        /// names the outputs shown while it steps.
+        /// </summary>
+        protected static void RegisterRunInput(GH_InputParamManager pManager, string design, string shows)
         {
-            BaseMeshReport report = solver.Report;
-            while (report.Iterations < maxIterations && !report.IsConverged)
+            pManager.AddBooleanParameter("Run", "Run", RunDescription("the " + design,
+                "; meanwhile " + shows + " show the current iterate, and the strips are built once it converges or stops (at Max Iterations, on Escape, or when Run is switched off)"),
+                GH_ParamAccess.item, false);
+        }
+
+        /// <summary>The inputs every base-mesh component has: the reference (input 0), those of <see cref="RegisterSolveInputs"/> and Run.</summary>
+        protected sealed class BaseMeshInputs
+        {
+            public Mesh Reference;
+            public int MaxIterations = 300;
+            /// <summary>The strip width; <see cref="WidthGiven"/> false: the default.</summary>
+            public double Width = double.NaN;
+            public bool WidthGiven;
+            /// <summary>Solve (one-shot) and Run (live).</summary>
+            public bool SolveNow, Run;
+        }
+
+        /// <summary>
+        /// Reads the reference (input 0), Max Iterations, Width and Solve (from input <paramref name="maxIterations"/> on)
+        /// and Run (input <paramref name="run"/>). Null when there is no reference, or with an error when Max Iterations is
+        /// below 1.
+        /// </summary>
+        protected BaseMeshInputs ReadInputs(IGH_DataAccess DA, int maxIterations, int run)
+        {
+            var inputs = new BaseMeshInputs();
+            if (!DA.GetData(0, ref inputs.Reference) || inputs.Reference == null) return null;
+            DA.GetData(maxIterations, ref inputs.MaxIterations);
+            inputs.WidthGiven = DA.GetData(maxIterations + 1, ref inputs.Width);
+            DA.GetData(maxIterations + 2, ref inputs.SolveNow);
+            DA.GetData(run, ref inputs.Run);
+            if (inputs.MaxIterations < 1)
             {
-                if (GH_Document.IsEscapeKeyDown()) break;
-                report = solver.Step((int)Math.Min(10, maxIterations - report.Iterations));
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Error, "Max Iterations must be at least 1");
+                return null;
             }
-            if (!report.IsConverged)
-                AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, string.Format(CultureInfo.InvariantCulture, "not converged after {0} iterations", report.Iterations));
-            return report;
+            return inputs;
         }
 
         /// <summary>
-        /// The strips of every family of <paramref name="solver"/>, <paramref name="width"/> wide: one planar-quad mesh per
-        /// strip in branch {k} of <paramref name="meshes"/>, each family's verdict in <paramref name="verdicts"/>. A family
-        /// that misses its angle gives an error with the library's message; its strips are output all the same (the
-        /// designer sees where).
+        /// The base-mesh session of this iteration (see <see cref="LiveComponent.LiveSession{T}"/>): kept while the cleaned
+        /// reference, the vertices <paramref name="xyz"/>, the <paramref name="polylines"/> of each family and
+        /// <paramref name="parameters"/> (the targets and switches) stay, else started by <paramref name="start"/> on the
+        /// reference, with the nodes of the net as given when <paramref name="keepInitialNodes"/>. Null (with a remark)
+        /// when neither Run nor Solve is on and these inputs have no session yet. <paramref name="design"/>: "net", "web".
         /// </summary>
-        protected void BuildFamilyStrips(BaseMeshSolver solver, double width, DataTree<object> meshes, List<string> verdicts)
+        protected SolverSession<BaseMeshRun, BaseMeshReport> BaseMeshSession(IGH_DataAccess DA, BaseMeshInputs inputs, double[] xyz, int[][][] polylines,
+            double[] parameters, string design, bool keepInitialNodes, Func<LamellaMesh, BaseMeshSolver> start)
         {
+            CleanMesh clean = CleanMeshInput(inputs.Reference);
+            var fingerprint = new List<double>(parameters) { xyz.Length };
+            fingerprint.AddRange(xyz);
+            foreach (int[][] family in polylines)
+            {
+                fingerprint.Add(family.Length);
+                foreach (int[] polyline in family)
+                {
+                    fingerprint.Add(polyline.Length);
+                    foreach (int v in polyline) fingerprint.Add(v);
+                }
+            }
+            string signature = Signature.Of(clean.Xyz, clean.Triangles, fingerprint.ToArray());
+            return LiveSession(DA, sessions, signature, inputs.Run, inputs.SolveNow, "optimise the " + design, () =>
+            {
+                using (LamellaMesh reference = LamellaMesh.FromArrays(clean.Xyz, clean.Triangles))
+                {
+                    return SolverSession.Of(new BaseMeshRun(start(reference), keepInitialNodes), signature);
+                }
+            });
+        }
+
+        /// <summary>
+        /// The component's message: the iteration (or "converged"), then <paramref name="details"/>.
+        /// </summary>
+        protected static string IterationMessage(BaseMeshReport report, string details) =>
+            (report.IsConverged ? "converged · " : string.Format(CultureInfo.InvariantCulture, "iteration {0} · ", report.Iterations)) + details;
+
+        /// <summary>
+        /// Once the solve has converged or stopped (not <paramref name="step"/>.Continues): the strips of every family of
+        /// <paramref name="solver"/>, Width wide (the default for the vertices <paramref name="xyz"/> when not given, named
+        /// in a remark), one planar-quad mesh per strip in branch {k} of output <paramref name="stripsOutput"/>; returns
+        /// each family's verdict as a line. A family that misses its angle gives an error with the library's message; its
+        /// strips are output all the same (the designer sees where). While it runs on: nothing, no line.
+        /// </summary>
+        protected List<string> StripsOnceStopped(IGH_DataAccess DA, LiveStep<BaseMeshReport> step, BaseMeshSolver solver, BaseMeshInputs inputs, double[] xyz, int stripsOutput)
+        {
+            var verdicts = new List<string>();
+            if (step.Continues) return verdicts;
+            double width = inputs.WidthGiven ? inputs.Width : DefaultWidth(xyz);
+            var meshes = new DataTree<object>();
             for (int k = 0; k < solver.FamilyCount; k++)
             {
                 using (Strips strips = solver.BuildStrips(k, width))
@@ -67,6 +152,18 @@ namespace Lamella.Grasshopper
                     meshes.AddRange(RhinoConversion.QuadMeshes(StripArrays.Split(strips.Vertices(), 3, strips.Quads(), strips.VertexOffsets(), strips.QuadOffsets())), new GH_Path(k));
                 }
             }
+            DA.SetDataTree(stripsOutput, meshes);
+            return verdicts;
+        }
+
+        /// <summary>The default strip width for the net's vertices <paramref name="xyz"/>, named in a remark.</summary>
+        private double DefaultWidth(double[] xyz)
+        {
+            double width = StripDefaults.Width(xyz);
+            AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, string.Format(CultureInfo.InvariantCulture,
+                "Width not set: {0:G6} ({1}; about {2:0.#} % of the net's extent)", width,
+                RhinoConversion.DocumentUnits() ?? "document units", 100 * StripDefaults.WidthFraction));
+            return width;
         }
 
         /// <summary>The optimised polylines of every family (vertex indices into <paramref name="xyz"/>), branch {k} per family.</summary>

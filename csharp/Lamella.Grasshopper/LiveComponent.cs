@@ -6,7 +6,8 @@ using Lamella.Hosting;
 namespace Lamella.Grasshopper
 {
     /// <summary>
-    /// A component that solves live and one-shot (Strip Field, Strip Net, Strip Web, Reshape Surface): one solver session
+    /// A component that solves live and one-shot (Strip Field, Strip Net, Strip Web, Reshape Surface, and through
+    /// <see cref="BaseMeshComponent"/> Optimise Net, Torsion-Free Net and Optimise Web): one solver session
     /// per iteration (list item or tree branch) kept across solutions in <see cref="Sessions"/> and started again when its
     /// own inputs change; a Run input that steps every unconverged session within a time budget shared per solution and
     /// schedules the next solution after a delay as long as the last cycle kept Grasshopper busy; a Solve input that

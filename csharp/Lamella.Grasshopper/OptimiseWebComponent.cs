@@ -7,6 +7,7 @@ using Grasshopper.Kernel;
 using Grasshopper.Kernel.Data;
 using Grasshopper.Kernel.Types;
 using Lamella.Conversion;
+using Lamella.Hosting;
 using Rhino.Geometry;
 
 namespace Lamella.Grasshopper
@@ -15,7 +16,8 @@ namespace Lamella.Grasshopper
     /// Optimise Web: moves the vertices of a 3-web (Strip Web's Polylines, or any three families of polylines crossing at
     /// shared points) near a reference surface until its rows, columns and diagonals are the asked families exactly
     /// (paper Sec. 3.5 on Sec. 4.2's webs: a level-set web's diagonals are only nearly the asked curves); then every
-    /// polyline carries a developable strip of planar quads. One-shot like Optimise Net: solves when Solve is true.
+    /// polyline carries a developable strip of planar quads. Live (Run: the polylines and the web move while it steps, the
+    /// strips follow once it converges or stops) or one-shot (Solve), as Optimise Net.
     /// </summary>
     public class OptimiseWebComponent : BaseMeshComponent
     {
@@ -24,7 +26,7 @@ namespace Lamella.Grasshopper
 
         public OptimiseWebComponent()
             : base("Optimise Web", "OptWeb",
-                "Moves a 3-web's vertices near the reference surface until its rows, columns and diagonals are exact families of angle θ (paper Sec. 3.5 on the webs of Sec. 4.2: 0° and 180° asymptotic curves, 90° geodesics, others pseudo-geodesics); the level sets of Strip Web make the diagonals only nearly so. Then each polyline carries a developable strip of planar quads. Solves when Solve is true.",
+                "Moves a 3-web's vertices near the reference surface until its rows, columns and diagonals are exact families of angle θ (paper Sec. 3.5 on the webs of Sec. 4.2: 0° and 180° asymptotic curves, 90° geodesics, others pseudo-geodesics); the level sets of Strip Web make the diagonals only nearly so. Then each polyline carries a developable strip of planar quads. Run optimises live (the web moves while it steps), Solve to convergence at once.",
                 "OptimiseWeb")
         {
         }
@@ -39,18 +41,16 @@ namespace Lamella.Grasshopper
             pManager.AddNumberParameter("Theta Rows", "θR", "Angle of the rows' family (the first branch), in degrees, in [0, 180]: 0 and 180 asymptotic curves, 90 geodesics. Default 0.", GH_ParamAccess.item, DefaultThetas[0]);
             pManager.AddNumberParameter("Theta Columns", "θC", "Angle of the columns' family (the second branch), as Theta Rows. Default 0.", GH_ParamAccess.item, DefaultThetas[1]);
             pManager.AddNumberParameter("Theta Diagonals", "θD", "Angle of the diagonals' family (the third branch), as Theta Rows. Default 90 (with 0 and 0: an AAG web).", GH_ParamAccess.item, DefaultThetas[2]);
-            pManager.AddIntegerParameter("Max Iterations", "I", "The most solver iterations (a count, ≥ 1). Default 300.", GH_ParamAccess.item, 300);
-            pManager.AddNumberParameter("Width", "W", "Width of each flat strip, in document units, > 0. Default: a round number near 2 % of the web's extent (named in a remark).", GH_ParamAccess.item);
-            pManager[6].Optional = true;
-            pManager.AddBooleanParameter("Solve", "Sv", "True solves within this solution. Default false.", GH_ParamAccess.item, false);
+            RegisterSolveInputs(pManager, "web");
+            RegisterRunInput(pManager, "web", "Polylines, Web and Report");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddCurveParameter("Polylines", "P", "The optimised web's polylines: branch {0} the rows, {1} the columns, {2} the diagonals.", GH_ParamAccess.tree);
-            pManager.AddMeshParameter("Web", "Wb", "The optimised web as a triangle mesh: its triangles are the cycles of one segment of each family.", GH_ParamAccess.item);
-            pManager.AddMeshParameter("Strip Meshes", "S", "One planar-quad mesh per polyline that carries a strip: branch {0} the rows, {1} the columns, {2} the diagonals.", GH_ParamAccess.tree);
-            pManager.AddTextParameter("Report", "R", "Iterations, each family's angle error, the deviation from the reference, each family's strip verdict.", GH_ParamAccess.item);
+            pManager.AddCurveParameter("Polylines", "P", "The optimised web's polylines: branch {0} the rows, {1} the columns, {2} the diagonals." + UpdatedWhileRunning, GH_ParamAccess.tree);
+            pManager.AddMeshParameter("Web", "Wb", "The optimised web as a triangle mesh: its triangles are the cycles of one segment of each family." + UpdatedWhileRunning, GH_ParamAccess.item);
+            pManager.AddMeshParameter("Strip Meshes", "S", "One planar-quad mesh per polyline that carries a strip: branch {0} the rows, {1} the columns, {2} the diagonals." + BuiltOnceStopped, GH_ParamAccess.tree);
+            pManager.AddTextParameter("Report", "R", "Iterations, each family's angle error, the deviation from the reference, the welded vertex count, updated while Run steps; each family's strip verdict once the strips are built.", GH_ParamAccess.item);
         }
 
         /// <summary>
@@ -87,60 +87,41 @@ namespace Lamella.Grasshopper
             return families;
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void SolveLive(IGH_DataAccess DA)
         {
-            Mesh input = null;
+            BaseMeshInputs inputs = ReadInputs(DA, 5, 8);
             GH_Structure<GH_Curve> tree;
-            if (!DA.GetData(0, ref input) || input == null || !DA.GetDataTree(1, out tree) || tree == null) return;
+            if (inputs == null || !DA.GetDataTree(1, out tree) || tree == null) return;
             double[] thetas = (double[])DefaultThetas.Clone();
-            double width = double.NaN;
-            int maxIterations = 300;
-            bool solveNow = false;
             for (int k = 0; k < 3; k++) DA.GetData(2 + k, ref thetas[k]);
-            DA.GetData(5, ref maxIterations);
-            bool widthGiven = DA.GetData(6, ref width);
-            DA.GetData(7, ref solveNow);
-            if (maxIterations < 1)
-            {
-                AddRuntimeMessage(GH_RuntimeMessageLevel.Error, "Max Iterations must be at least 1");
-                return;
-            }
-            if (!solveNow)
-            {
-                AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, "set Solve to true to optimise the web");
-                return;
-            }
             double[][][] points = FamilyPoints(tree);
             if (points == null) return;
-            CleanMesh clean = CleanMeshInput(input);
             WeldedNet web = NetPolylines.FromPoints(points, WeldTolerance());
-            width = StripWidth(widthGiven, width, web.Xyz);
+            SolverSession<BaseMeshRun, BaseMeshReport> session = BaseMeshSession(DA, inputs, web.Xyz, web.Polylines, thetas, "web", false,
+                reference => BaseMeshSolver.Web(reference, web.Xyz, web.Polylines[0], web.Polylines[1], web.Polylines[2], thetas[0], thetas[1], thetas[2]));
+            if (session == null) return;
 
-            BaseMeshReport report;
-            BaseMeshFamilyReport[] families;
-            double[] xyz;
-            int[] triangles;
-            var meshes = new DataTree<object>();
-            var verdicts = new List<string>();
-            using (LamellaMesh reference = LamellaMesh.FromArrays(clean.Xyz, clean.Triangles))
-            using (var solver = BaseMeshSolver.Web(reference, web.Xyz, web.Polylines[0], web.Polylines[1], web.Polylines[2], thetas[0], thetas[1], thetas[2]))
-            {
-                report = SolveBaseMesh(solver, maxIterations);
-                families = Enumerable.Range(0, 3).Select(solver.FamilyReport).ToArray();
-                xyz = solver.Positions();
-                triangles = solver.Triangles();
-                BuildFamilyStrips(solver, width, meshes, verdicts);
-            }
-            if (!report.FamiliesMet)
+            LiveStep<BaseMeshReport> step = Advance(session, inputs.Run, inputs.SolveNow, inputs.MaxIterations);
+            BaseMeshSolver solver = session.Solver.Solver;
+            BaseMeshReport report = step.Outcome.Report;
+            BaseMeshFamilyReport[] families = Enumerable.Range(0, 3).Select(solver.FamilyReport).ToArray();
+            double[] xyz = solver.Positions();
+            int[] triangles = solver.Triangles();
+            if (!step.Continues && !report.FamiliesMet)
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, "the families are not met (the library accepts 1°): " + string.Join("; ", families.Select(f => f.ToString())));
             if (triangles.Length == 0)
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, "no triangle: no segment of a row, a column and a diagonal close one (are the branches the rows, columns and diagonals of one web?)");
-            Message = string.Format(CultureInfo.InvariantCulture, "θ error {0:0.##}°", families.Max(f => f.AngleErrorMaxDegrees));
+            Message = IterationMessage(report, string.Format(CultureInfo.InvariantCulture, "θ error {0:0.##}°", families.Max(f => f.AngleErrorMaxDegrees)));
             DA.SetDataTree(0, FamilyPolylines(xyz, web.Polylines));
             DA.SetData(1, RhinoConversion.TriangleMesh(xyz, triangles));
-            DA.SetDataTree(2, meshes);
-            DA.SetData(3, string.Format(CultureInfo.InvariantCulture, "{0}\n{1}\nweb: {2} vertices ({3} points welded), {4} triangles\n{5}",
-                report.Describe(), families[2], web.VertexCount, web.WeldedPoints, triangles.Length / 3, string.Join("\n", verdicts)));
+            var text = new List<string>
+            {
+                report.Describe(),
+                families[2].ToString(),
+                string.Format(CultureInfo.InvariantCulture, "web: {0} vertices ({1} points welded), {2} triangles", web.VertexCount, web.WeldedPoints, triangles.Length / 3),
+            };
+            text.AddRange(StripsOnceStopped(DA, step, solver, inputs, web.Xyz, 2));
+            DA.SetData(3, string.Join("\n", text));
         }
     }
 }

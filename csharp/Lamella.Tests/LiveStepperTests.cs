@@ -1,15 +1,18 @@
 using System;
 using System.Collections.Generic;
+using System.Linq;
 using Lamella.Hosting;
 using NUnit.Framework;
 
 namespace Lamella.Tests
 {
     /// <summary>
-    /// The live and one-shot solving that Strip Field, Strip Net, Strip Web and Reshape Surface share
-    /// (<see cref="LiveStepper"/>, <see cref="LiveSessions{T}"/>, <see cref="SolverSession{TSolver, TReport}"/>), driven as
-    /// Grasshopper drives it, solution after solution, on a real net of two families and a real reshape of the hyperbolic
-    /// paraboloid z = xy/5, with a fake clock that each solver iteration advances by a fixed time.
+    /// The live and one-shot solving that Strip Field, Strip Net, Strip Web, Reshape Surface, Optimise Net, Torsion-Free
+    /// Net and Optimise Web share (<see cref="LiveStepper"/>, <see cref="LiveSessions{T}"/>,
+    /// <see cref="SolverSession{TSolver, TReport}"/>), driven as Grasshopper drives it, solution after solution, on a real
+    /// net of two families and a real reshape of the hyperbolic paraboloid z = xy/5 and a real torsion-free base mesh (the
+    /// perturbed helices on the cylinder of <see cref="BaseMeshTests"/>), with a fake clock that each solver iteration
+    /// advances by a fixed time.
     /// </summary>
     [TestFixture]
     public class LiveStepperTests
@@ -53,7 +56,7 @@ namespace Lamella.Tests
 
         /// <summary>
         /// What a component keeps across its solutions, as these tests drive it: a fake clock, the stepper on it, one
-        /// iteration's net and reshape sessions, and a log of the sessions started.
+        /// iteration's net, reshape and base-mesh sessions, and a log of the sessions started.
         /// </summary>
         private sealed class Host : IDisposable
         {
@@ -62,6 +65,7 @@ namespace Lamella.Tests
             public readonly List<string> Started = new List<string>();
             public readonly LiveSessions<SolverSession<NetSolver, NetReport>> Nets = new LiveSessions<SolverSession<NetSolver, NetReport>>();
             public readonly LiveSessions<SolverSession<ReshapeSolver, ReshapeReport>> Reshapes = new LiveSessions<SolverSession<ReshapeSolver, ReshapeReport>>();
+            public readonly LiveSessions<SolverSession<BaseMeshRun, BaseMeshReport>> BaseMeshes = new LiveSessions<SolverSession<BaseMeshRun, BaseMeshReport>>();
 
             public Host()
             {
@@ -73,7 +77,8 @@ namespace Lamella.Tests
             {
                 Nets.BeginSolution();
                 Reshapes.BeginSolution();
-                int running = Nets.RunningCount() + Reshapes.RunningCount();
+                BaseMeshes.BeginSolution();
+                int running = Nets.RunningCount() + Reshapes.RunningCount() + BaseMeshes.RunningCount();
                 Stepper.BeginSolution(running);
                 return running;
             }
@@ -83,6 +88,7 @@ namespace Lamella.Tests
             {
                 Nets.EndSolution();
                 Reshapes.EndSolution();
+                BaseMeshes.EndSolution();
                 return Stepper.EndSolution();
             }
 
@@ -90,6 +96,7 @@ namespace Lamella.Tests
             {
                 Nets.Dispose();
                 Reshapes.Dispose();
+                BaseMeshes.Dispose();
             }
         }
 
@@ -315,5 +322,99 @@ namespace Lamella.Tests
                 Assert.AreSame(other, host.Nets.Held(0, SignatureOf(90, 90, 30)));
             }
         }
+
+        /// <summary>
+        /// Torsion-Free Net with Run on: the perturbed ±45° helices on the cylinder (<see cref="HelixNet"/>) optimised
+        /// back to a geodesic net with torsion-free nodes (θ 90° both, Eq. 21), one session across solutions, each solution
+        /// stepping it within the whole 80 ms budget; iterations grow solution by solution, the next solution is scheduled
+        /// until it converges and not after. The nodes the session kept at its start are those of the net as given (the
+        /// library's initial report says their largest ruling angle); after the solve every node's rulings are within
+        /// 0.5° where they were up to 90° apart. Solve (one-shot, through <see cref="SolverSession.Of(BaseMeshRun, string)"/>)
+        /// reaches the same net within one solution; a solver that has stepped cannot give its initial nodes any more.
+        /// </summary>
+        [Test]
+        public void RunStepsATorsionFreeNetUntilItConvergesAndItsNodesUntwist()
+        {
+            var cylinder = new Cylinder(72, 40, 7);
+            var helices = new HelixNet(0.02);
+            string signature = Conversion.Signature.Of(helices.Points, new int[0], 90, 90, 1);
+            using (var host = new Host())
+            using (var reference = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            {
+                Func<BaseMeshSolver> start = () => new BaseMeshSolver(reference, helices.Points, helices.Rows, helices.Columns, 90, 90, true);
+                Func<SolverSession<BaseMeshRun, BaseMeshReport>> session = () => host.BaseMeshes.Session(0, signature, false, () =>
+                {
+                    host.Started.Add("torsion-free net");
+                    var run = new BaseMeshRun(start(), true);
+                    return new SolverSession<BaseMeshRun, BaseMeshReport>(run, host.Clock.Timed(Steppable.Of(run.Solver)), signature);
+                });
+
+                SolverSession<BaseMeshRun, BaseMeshReport> live = null;
+                var nodeAngleMax = new List<double>();
+                int solutions = 0;
+                bool converged = false;
+                while (!converged)
+                {
+                    Assert.Less(++solutions, 100, "converges in a bounded number of solutions");
+                    double share = BudgetMs / Math.Max(1, host.BeginSolution());
+                    var current = session();
+                    if (live == null) live = current;
+                    Assert.AreSame(live, current, "the session is kept across solutions");
+                    BaseMeshReport before = current.Report;
+                    LiveStep<BaseMeshReport> step = host.Stepper.Advance(current, true, false, 300, () => false);
+                    CheckLiveStep(step, before.Iterations, before.IsConverged, share, "torsion-free net, solution " + solutions);
+                    Assert.AreEqual(BudgetMs, share, "one session: the whole budget");
+                    if (!before.IsConverged) Assert.Greater(current.Report.Iterations, before.Iterations, "the count grows");
+                    nodeAngleMax.Add(step.Outcome.Report.NodeRulingAngleMaxDegrees);
+                    int? delay = host.EndSolution();
+                    converged = current.IsConverged;
+                    Assert.AreEqual(!converged, delay.HasValue, "the next solution is scheduled while it runs on");
+                }
+                CollectionAssert.AreEqual(new[] { "torsion-free net" }, host.Started, "started once");
+                Assert.Greater(solutions, 3, "the solve took several live solutions");
+                BaseMeshSolver solver = live.Solver.Solver;
+                BaseMeshReport report = live.Report;
+                Assert.IsTrue(report.FamiliesMet && report.IsTorsionFree, report.Describe());
+                Console.WriteLine("  live torsion-free net: {0} iterations in {1} solutions; node ruling angle max per solution {2}", report.Iterations, solutions,
+                    string.Join(", ", nodeAngleMax.Select(a => a.ToString("0.##", System.Globalization.CultureInfo.InvariantCulture))));
+
+                // The node ruling angles before (kept at the start) and after, node by node.
+                BaseMeshNode[] initial = live.Solver.InitialNodes, final = solver.Nodes();
+                CollectionAssert.AreEqual(initial.Select(n => n.Vertex).ToArray(), final.Select(n => n.Vertex).ToArray(), "the same nodes");
+                double[] anglesBefore = initial.Where(n => n.RulingAngleDegrees.HasValue).Select(n => n.RulingAngleDegrees.Value).ToArray();
+                double[] anglesAfter = final.Where(n => n.RulingAngleDegrees.HasValue).Select(n => n.RulingAngleDegrees.Value).ToArray();
+                Assert.AreEqual(solver.InitialReport.NodeCount, anglesBefore.Length);
+                Assert.AreEqual(solver.InitialReport.NodeRulingAngleMaxDegrees, anglesBefore.Max(), 1e-9, "the kept nodes are the net's as given");
+                Assert.AreEqual(report.NodeRulingAngleMaxDegrees, anglesAfter.Max(), 1e-9);
+                Assert.Greater(anglesBefore.Max(), 10.0, "the perturbed net's strips meet at its nodes far apart");
+                Assert.LessOrEqual(anglesAfter.Max(), 0.5, "torsion-free after");
+                Assert.Less(Rms(anglesAfter), Rms(anglesBefore) / 100, "the node angles fall by two orders of magnitude");
+                for (int i = 0; i < initial.Length; i++)
+                {
+                    if (!initial[i].RulingAngleDegrees.HasValue || !final[i].RulingAngleDegrees.HasValue) continue;
+                    Assert.LessOrEqual(final[i].RulingAngleDegrees.Value, Math.Max(initial[i].RulingAngleDegrees.Value, 0.5), "node at vertex " + initial[i].Vertex);
+                }
+                Assert.Less(nodeAngleMax.Last(), nodeAngleMax.First(), "the live iterates show the nodes untwisting");
+
+                // Solve: the same optimisation to convergence within one solution, nothing scheduled.
+                host.BeginSolution();
+                var oneShot = host.BaseMeshes.Session(1, signature, false, () => SolverSession.Of(new BaseMeshRun(start(), false), signature));
+                LiveStep<BaseMeshReport> solved = host.Stepper.Advance(oneShot, false, true, 300, () => false);
+                Assert.AreEqual(LiveMode.Solved, solved.Mode);
+                Assert.AreEqual(SteppingStop.Converged, solved.Outcome.Stop);
+                Assert.AreEqual(report.Iterations, solved.Outcome.Iterations, "as many iterations as the live solve");
+                Assert.IsNull(oneShot.Solver.InitialNodes, "not asked for");
+                CollectionAssert.AreEqual(solver.Positions(), oneShot.Solver.Solver.Positions(), "the same net");
+                Assert.IsNull(host.EndSolution());
+
+                // A stepped solver's nodes are no longer the net's as given; the run refuses it and releases it.
+                BaseMeshSolver stepped = start();
+                stepped.Step(1);
+                Assert.Throws<InvalidOperationException>(() => new BaseMeshRun(stepped, true));
+                Assert.Throws<ObjectDisposedException>(() => stepped.Step(1), "released");
+            }
+        }
+
+        private static double Rms(double[] values) => Math.Sqrt(values.Sum(v => v * v) / values.Length);
     }
 }

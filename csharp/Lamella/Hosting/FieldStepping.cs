@@ -68,7 +68,7 @@ namespace Lamella.Hosting
         public bool IsConverged(TReport state) => converged(state);
     }
 
-    /// <summary>The <see cref="Steppable{TReport}"/> of each Lamella solver: a field, a net or 3-web, a reshape.</summary>
+    /// <summary>The <see cref="Steppable{TReport}"/> of each Lamella solver: a field, a net or 3-web, a reshape, a base mesh.</summary>
     public static class Steppable
     {
         /// <summary>A field session.</summary>
@@ -91,10 +91,17 @@ namespace Lamella.Hosting
             if (solver == null) throw new ArgumentNullException(nameof(solver));
             return new Steppable<ReshapeReport>(() => solver.Report, solver.Step, r => r.Iterations, r => r.IsConverged);
         }
+
+        /// <summary>A base-mesh optimisation: a net of rows and columns (torsion-free or not) or a 3-web.</summary>
+        public static Steppable<BaseMeshReport> Of(BaseMeshSolver solver)
+        {
+            if (solver == null) throw new ArgumentNullException(nameof(solver));
+            return new Steppable<BaseMeshReport>(() => solver.Report, solver.Step, r => r.Iterations, r => r.IsConverged);
+        }
     }
 
     /// <summary>
-    /// Steps a solver session (a field, a net or 3-web, a reshape: <see cref="Steppable"/>) the way an interactive host needs: one iteration at a time within a time budget (a live
+    /// Steps a solver session (a field, a net or 3-web, a reshape, a base mesh: <see cref="Steppable"/>) the way an interactive host needs: one iteration at a time within a time budget (a live
     /// solve that keeps the canvas responsive, whatever the mesh size), or to convergence within one call (a one-shot
     /// solve for Hops, Rhino.Compute or an optimiser such as Galapagos), both with an iteration cap and a cancel check
     /// before every iteration.

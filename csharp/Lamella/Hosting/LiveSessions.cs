@@ -39,7 +39,7 @@ namespace Lamella.Hosting
     }
 
     /// <summary>
-    /// A native solver (a net or 3-web, a reshape) as a session a host keeps and steps: the solver, owned, the
+    /// A native solver (a net or 3-web, a reshape, a base mesh) as a session a host keeps and steps: the solver, owned, the
     /// signature of the inputs it was started from and its <see cref="Steppable{TReport}"/>.
     /// </summary>
     public sealed class SolverSession<TSolver, TReport> : ISteppedSession<TReport> where TSolver : class, IDisposable
@@ -74,7 +74,7 @@ namespace Lamella.Hosting
         public void Dispose() => Solver.Dispose();
     }
 
-    /// <summary>The <see cref="SolverSession{TSolver, TReport}"/> of a net (or 3-web) and of a reshape.</summary>
+    /// <summary>The <see cref="SolverSession{TSolver, TReport}"/> of a net (or 3-web), of a reshape and of a base mesh.</summary>
     public static class SolverSession
     {
         /// <summary>A session owning <paramref name="net"/>, a net of two families or a 3-web.</summary>
@@ -84,6 +84,13 @@ namespace Lamella.Hosting
         /// <summary>A session owning <paramref name="reshape"/>.</summary>
         public static SolverSession<ReshapeSolver, ReshapeReport> Of(ReshapeSolver reshape, string signature) =>
             new SolverSession<ReshapeSolver, ReshapeReport>(reshape, Steppable.Of(reshape), signature);
+
+        /// <summary>A session owning <paramref name="baseMesh"/>, a base-mesh optimisation (a net of rows and columns or a 3-web).</summary>
+        public static SolverSession<BaseMeshRun, BaseMeshReport> Of(BaseMeshRun baseMesh, string signature)
+        {
+            if (baseMesh == null) throw new ArgumentNullException(nameof(baseMesh));
+            return new SolverSession<BaseMeshRun, BaseMeshReport>(baseMesh, Steppable.Of(baseMesh.Solver), signature);
+        }
     }
 
     /// <summary>

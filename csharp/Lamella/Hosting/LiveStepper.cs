@@ -43,7 +43,7 @@ namespace Lamella.Hosting
     /// session runs on, <see cref="EndSolution"/> gives the delay to schedule the next solution after; Solve steps it to
     /// convergence within the solution (for Hops, Rhino.Compute and optimisers). An Escape (the host's cancel check, asked
     /// before every iteration) stops stepping and scheduling until Run is switched off and on. One per component; any
-    /// session type (a field, a net or 3-web, a reshape: <see cref="ISteppedSession{TReport}"/>).
+    /// session type (a field, a net or 3-web, a reshape, a base mesh: <see cref="ISteppedSession{TReport}"/>).
     /// </summary>
     public sealed class LiveStepper
     {
