@@ -12,7 +12,7 @@ use crate::mesh::{coarsened, FaceBvh, TriMesh};
 /// The stand-in for `mesh` with about `target_vertices` vertices; `None` when `mesh` is small
 /// enough to be searched itself (at most 1.5 × `target_vertices`, or `target_vertices` = 0) or
 /// when no valid coarsening exists (then the search runs on `mesh`).
-pub(super) fn search_proxy(mesh: &TriMesh, target_vertices: usize) -> Option<TriMesh> {
+pub(crate) fn search_proxy(mesh: &TriMesh, target_vertices: usize) -> Option<TriMesh> {
     if target_vertices == 0 || 2 * mesh.vertex_count() <= 3 * target_vertices {
         return None;
     }
@@ -22,7 +22,7 @@ pub(super) fn search_proxy(mesh: &TriMesh, target_vertices: usize) -> Option<Tri
 /// `field` (one value per vertex of `proxy`) at every vertex of `mesh`: linear on the face of
 /// `proxy` closest to the vertex. Every vertex of `proxy` is a vertex of `mesh`, so the values
 /// there are carried unchanged.
-pub(super) fn carried_to(proxy: &TriMesh, field: &[f64], mesh: &TriMesh) -> Vec<f64> {
+pub(crate) fn carried_to(proxy: &TriMesh, field: &[f64], mesh: &TriMesh) -> Vec<f64> {
     let faces = FaceBvh::new(proxy);
     mesh.positions()
         .iter()

@@ -404,28 +404,38 @@ impl StartSearch {
 
     /// The family measure of `field`'s level curves.
     fn measure(&self, field: &[f64]) -> Result<FamilyAngles, String> {
-        let mesh = self.probed_mesh();
-        let levels = uniform_levels(mesh, field, self.options.levels).map_err(|e| format!("no level curves: {e}"))?;
-        let curves = extract_level_curves(mesh, field, &levels).map_err(|e| format!("no level curves: {e}"))?;
-        let (low, high) = mesh.bounding_box();
-        let spacing = self.options.spacing_edges * mesh.mean_edge_length();
-        family_angles(&curves, self.params.family, spacing, (high - low).norm()).map_err(|e| format!("level curves not measurable: {e}"))
+        level_curve_measure(self.probed_mesh(), field, self.params.family, &self.options)
     }
 
     fn score(&self, measure: &FamilyAngles, singular: usize) -> Result<f64, String> {
-        if measure.measured == 0 {
-            return Err("no level curve could be measured".into());
-        }
-        let straight = measure.straight_fraction();
-        if self.is_pseudo_geodesic() && straight > MAX_STRAIGHT_FRACTION {
-            return Err(format!(
-                "degenerate: {:.0} % of the level curves are nearly straight, where a pseudo-geodesic has no binormal",
-                100.0 * straight
-            ));
-        }
-        let singular_fraction = singular as f64 / self.probed_mesh().vertex_count() as f64;
-        Ok(measure.rms_error_degrees + 0.25 * measure.max_error_degrees + STRAIGHT_PENALTY * straight + SINGULAR_PENALTY * singular_fraction)
+        family_score(measure, self.params.family, singular as f64 / self.probed_mesh().vertex_count() as f64)
     }
+}
+
+/// The family measure of the level curves of `field` on `mesh` (the search's judge): `levels`
+/// curves resampled every `spacing_edges` mean edge lengths, their binormals against the smooth
+/// surface normal ([`family_angles`]).
+pub(crate) fn level_curve_measure(mesh: &TriMesh, field: &[f64], family: Family, options: &SearchOptions) -> Result<FamilyAngles, String> {
+    let levels = uniform_levels(mesh, field, options.levels).map_err(|e| format!("no level curves: {e}"))?;
+    let curves = extract_level_curves(mesh, field, &levels).map_err(|e| format!("no level curves: {e}"))?;
+    let (low, high) = mesh.bounding_box();
+    let spacing = options.spacing_edges * mesh.mean_edge_length();
+    family_angles(&curves, family, spacing, (high - low).norm()).map_err(|e| format!("level curves not measurable: {e}"))
+}
+
+/// A probed family's score (degrees; lower is better): RMS angle error plus a quarter of the
+/// largest, plus penalties for nearly straight points and for the fraction of singular vertices.
+/// `Err(reason)` rejects it: nothing measured, or a degenerate pseudo-geodesic family (more than
+/// half of its points nearly straight).
+pub(crate) fn family_score(measure: &FamilyAngles, family: Family, singular_fraction: f64) -> Result<f64, String> {
+    if measure.measured == 0 {
+        return Err("no level curve could be measured".into());
+    }
+    let straight = measure.straight_fraction();
+    if matches!(family, Family::PseudoGeodesic { .. }) && straight > MAX_STRAIGHT_FRACTION {
+        return Err(format!("degenerate: {:.0} % of the level curves are nearly straight, where a pseudo-geodesic has no binormal", 100.0 * straight));
+    }
+    Ok(measure.rms_error_degrees + 0.25 * measure.max_error_degrees + STRAIGHT_PENALTY * straight + SINGULAR_PENALTY * singular_fraction)
 }
 
 /// What [`search_start`] found: the solver to continue, every candidate and the winner.
@@ -511,7 +521,7 @@ fn validate(options: &SearchOptions) -> Result<(), FieldError> {
 
 /// The two largest principal axes of the vertex positions (unit vectors, each oriented to have a
 /// non-negative largest component, so the result does not depend on the eigen solver's signs).
-fn principal_plane(mesh: &TriMesh) -> [Vec3; 2] {
+pub(crate) fn principal_plane(mesh: &TriMesh) -> [Vec3; 2] {
     let n = mesh.vertex_count() as f64;
     let mean: Vec3 = mesh.positions().iter().sum::<Vec3>() / n;
     let mut covariance = Matrix3::zeros();

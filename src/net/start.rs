@@ -1,23 +1,161 @@
-//! The default start of a net (Sec. 4.1): each family from the single-family start search, the
-//! second one among the candidates that cross the first family's level sets.
+//! The default start of a net (Sec. 4.1): the two families' starts are judged together, by a
+//! short net solve from each candidate pair, because a pair whose families are each fine alone can
+//! still run tangent somewhere. On the hall roof the two mirror families of 60° pseudo-geodesics
+//! (the start search's winner and a second one crossing it at 45° on average) touch along a line
+//! across the roof, where no solve can pull them apart; two heights tilted ±30° about one axis,
+//! with the families' orientations free, lead to a net crossing at 40° or more everywhere.
+//!
+//! Candidates, in this order (the order settles ties, so the start is deterministic):
+//! 1. each family from the single-family start search ([`StartSearch`]), the second one among
+//!    the candidates crossing the first at [`START_CROSSING_DEGREES`] or more on average;
+//! 2. only if that pair is not acceptable: pairs of heights along `a cos α ± b sin α`, for each
+//!    principal axis `a` of the surface (`b` the other one in the principal plane) and
+//!    α = [`PAIR_HALF_ANGLE_DEGREES`], each height with both signs where the family has two
+//!    orientations (a pseudo-geodesic family and its mirror 180° − θ).
+//!
+//! Every pair is probed by a short net solve (on the start search's stand-in of a large mesh) and
+//! scored: the sum of both families' scores along their level curves
+//! ([`crate::initialisation::StartSearch`]'s judge) plus [`TANGENT_PENALTY`] per unit of the
+//! surface area where the families cross less than [`CLEARANCE_DEGREES`] above the minimum angle.
+//! A pair is acceptable when each family scores at most [`SearchOptions::acceptable_score`] and at
+//! most [`MAX_TANGENT_AREA`] of the area crosses that close. A 3-web starts from its first two families' separate searches.
 
+use serde::{Deserialize, Serialize};
+
+use super::intersection::intersection_angles;
 use super::params::NetParams;
-use crate::field::{FieldParams, FieldSolver};
-use crate::initialisation::{SearchError, SearchOptions, StartSearch};
+use super::solver::NetSolver;
+use crate::field::{Family, FieldError, FieldParams, FieldSolver};
+use crate::initialisation::{carried_to, family_score, level_curve_measure, principal_plane, search_proxy, SearchError, SearchOptions, StartSearch};
 use crate::mesh::TriMesh;
 
 /// Smallest area-weighted mean angle (degrees) at which the second family's start must cross the
-/// first's: well above the default minimum angle, so that the solve does not have to turn one
-/// family across the other.
+/// first's in the separate searches: well above the default minimum angle, so that the solve
+/// does not have to turn one family across the other.
 pub const START_CROSSING_DEGREES: f64 = 45.0;
+/// Half the angle between the two heights of a pair candidate (degrees): they start crossing at
+/// 60°, between the default minimum (30°) and a right angle.
+pub const PAIR_HALF_ANGLE_DEGREES: f64 = 30.0;
+/// A probed pair crossing less than this many degrees above the minimum angle is too close to
+/// it: there the minimum-angle term is about to hold the families apart, against their own
+/// terms. On the hall roof the PP60 pairs scoring best on their families after the probe crossed
+/// that close on 10 % of the area and ended with a strip 3.4° off θ; pairs about the other axis
+/// crossed close on at most 1 % and ended with every strip within 1.3°.
+pub const CLEARANCE_DEGREES: f64 = 10.0;
+/// Largest fraction of the surface's area where an acceptable pair crosses within
+/// [`CLEARANCE_DEGREES`] of the minimum angle (or below it).
+pub const MAX_TANGENT_AREA: f64 = 0.01;
+/// Score (degrees) per unit fraction of the area crossing within [`CLEARANCE_DEGREES`] of the
+/// minimum angle (or below it).
+pub const TANGENT_PENALTY: f64 = 100.0;
 
-/// One start field per family of `params` on `mesh` (for a 3-web: per family of the first two,
-/// the third starts as `−F − H`, see [`super::NetSolver::new`]): the first family's winner of the
-/// start search, then the second family's winner among the candidates crossing it at
-/// [`START_CROSSING_DEGREES`] or more on average. Each field is the one its short solve reached.
+/// How a candidate pair of start fields is made.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum NetStartKind {
+    /// Each family from its own start search, the second crossing the first.
+    Separate,
+    /// Heights along `axis cos α + other sin α` and `axis cos α − other sin α`, each negated as
+    /// given (`F → −F` turns a pseudo-geodesic family into its mirror).
+    Pair { axis: [f64; 3], other: [f64; 3], half_angle_degrees: f64, negated: [bool; 2] },
+}
+
+impl NetStartKind {
+    /// A short description for reports.
+    pub fn describe(&self) -> String {
+        match self {
+            NetStartKind::Separate => "each family from its own start search".into(),
+            NetStartKind::Pair { axis: a, half_angle_degrees, negated, .. } => {
+                let sign = |n: bool| if n { "−" } else { "+" };
+                format!(
+                    "heights ±{half_angle_degrees}° about ({:.3}, {:.3}, {:.3}), signs {}{}",
+                    a[0],
+                    a[1],
+                    a[2],
+                    sign(negated[0]),
+                    sign(negated[1])
+                )
+            }
+        }
+    }
+}
+
+/// One candidate pair and how its short net solve ended.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct NetCandidate {
+    pub kind: NetStartKind,
+    /// Lower is better; `None` when rejected.
+    pub score: Option<f64>,
+    /// Each family's own score after the short solve, when measured.
+    pub family_scores: [Option<f64>; 2],
+    /// Fraction of the area where the families cross within [`CLEARANCE_DEGREES`] of the minimum
+    /// angle (or below it) after the short solve.
+    pub tangent_area_fraction: f64,
+    /// Why the candidate was rejected.
+    pub rejected: Option<String>,
+}
+
+/// What [`net_start_search`] found: one start field per given family, every candidate probed and
+/// the winner.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NetStart {
+    /// One field per vertex of the mesh for each family of a net (the first two of a 3-web).
+    pub fields: Vec<Vec<f64>>,
+    pub candidates: Vec<NetCandidate>,
+    /// Index into `candidates`.
+    pub winner: usize,
+    /// Vertex count of the coarsening the pairs were probed on, if any.
+    pub proxy_vertices: Option<usize>,
+}
+
+/// The start fields of [`net_start_search`].
 pub fn net_start(mesh: &TriMesh, params: &NetParams, options: &SearchOptions) -> Result<Vec<Vec<f64>>, SearchError> {
+    net_start_search(mesh, params, options).map(|start| start.fields)
+}
+
+/// The default start of a net of `params` on `mesh` (see the module notes). Errors:
+/// `SearchError::Field` for invalid parameters, `SearchError::NoStart` with every candidate's
+/// reason when all were rejected.
+pub fn net_start_search(mesh: &TriMesh, params: &NetParams, options: &SearchOptions) -> Result<NetStart, SearchError> {
     params.validate().map_err(SearchError::Field)?;
-    let mut fields: Vec<Vec<f64>> = Vec::with_capacity(params.families.len());
+    let separate = separate_starts(mesh, params, options);
+    if params.is_web() {
+        let fields = separate?;
+        let candidate = NetCandidate { kind: NetStartKind::Separate, score: None, family_scores: [None; 2], tangent_area_fraction: 0.0, rejected: None };
+        return Ok(NetStart { fields, candidates: vec![candidate], winner: 0, proxy_vertices: None });
+    }
+    let proxy = search_proxy(mesh, options.proxy_vertices);
+    let mut search = PairSearch { mesh: proxy.as_ref().unwrap_or(mesh), params, options, candidates: Vec::new(), best: None };
+    match separate {
+        Ok(fields) => {
+            let on_probed = match &proxy {
+                Some(proxy) => fields.iter().map(|field| carried_to(mesh, field, proxy)).collect(),
+                None => fields,
+            };
+            search.probe(NetStartKind::Separate, &on_probed)?;
+        }
+        Err(SearchError::NoStart { reasons }) => search.reject(NetStartKind::Separate, format!("no start: {}", reasons.join("; "))),
+        Err(error) => return Err(error),
+    }
+    if !search.has_acceptable() {
+        for (kind, fields) in pair_candidates(search.mesh, params) {
+            search.probe(kind, &fields)?;
+        }
+    }
+    let Some((winner, _, probed)) = search.best.take() else {
+        let reasons = search.candidates.iter().map(|c| format!("{}: {}", c.kind.describe(), c.rejected.as_deref().unwrap_or("not probed"))).collect();
+        return Err(SearchError::NoStart { reasons });
+    };
+    let fields = match &proxy {
+        Some(proxy) => probed.iter().map(|field| carried_to(proxy, field, mesh)).collect(),
+        None => probed,
+    };
+    Ok(NetStart { fields, candidates: search.candidates, winner, proxy_vertices: proxy.as_ref().map(TriMesh::vertex_count) })
+}
+
+/// Each of the first two families from its own start search, the second among the candidates
+/// crossing the first at [`START_CROSSING_DEGREES`] or more on average.
+fn separate_starts(mesh: &TriMesh, params: &NetParams, options: &SearchOptions) -> Result<Vec<Vec<f64>>, SearchError> {
+    let mut fields: Vec<Vec<f64>> = Vec::with_capacity(2);
     for &family in &params.families[..2] {
         let mut search = StartSearch::new(mesh, FieldParams { family, ..params.field.clone() }, options.clone()).map_err(SearchError::Field)?;
         if let Some(first) = fields.first() {
@@ -28,4 +166,142 @@ pub fn net_start(mesh: &TriMesh, params: &NetParams, options: &SearchOptions) ->
         fields.push(solver.field());
     }
     Ok(fields)
+}
+
+/// The pair candidates on `mesh` for the two families of `params`, in order.
+fn pair_candidates(mesh: &TriMesh, params: &NetParams) -> Vec<(NetStartKind, Vec<Vec<f64>>)> {
+    let [first, second] = principal_plane(mesh);
+    let (sin, cos) = PAIR_HALF_ANGLE_DEGREES.to_radians().sin_cos();
+    // Negating a field reverses its curves: a pseudo-geodesic or constant-slope family becomes
+    // its mirror; geodesics and asymptotic curves stay the same family.
+    let signs = |k: usize| -> &'static [bool] {
+        if matches!(params.families[k], Family::PseudoGeodesic { .. } | Family::ConstantSlope { .. }) { &[false, true] } else { &[false] }
+    };
+    let mut candidates = Vec::new();
+    for (axis, other) in [(first, second), (second, first)] {
+        let directions = [axis * cos + other * sin, axis * cos - other * sin];
+        for &negate_f in signs(0) {
+            for &negate_g in signs(1) {
+                let negated = [negate_f, negate_g];
+                let fields = (0..2)
+                    .map(|k| {
+                        let sign = if negated[k] { -1.0 } else { 1.0 };
+                        mesh.positions().iter().map(|p| sign * p.dot(&directions[k])).collect()
+                    })
+                    .collect();
+                let kind = NetStartKind::Pair { axis: [axis.x, axis.y, axis.z], other: [other.x, other.y, other.z], half_angle_degrees: PAIR_HALF_ANGLE_DEGREES, negated };
+                candidates.push((kind, fields));
+            }
+        }
+    }
+    candidates
+}
+
+/// The pairs probed so far and the best one.
+struct PairSearch<'a> {
+    /// The mesh the pairs are probed on (the stand-in of a large mesh).
+    mesh: &'a TriMesh,
+    params: &'a NetParams,
+    options: &'a SearchOptions,
+    candidates: Vec<NetCandidate>,
+    /// Index, score and the fields the short solve reached.
+    best: Option<(usize, f64, Vec<Vec<f64>>)>,
+}
+
+impl PairSearch<'_> {
+    fn reject(&mut self, kind: NetStartKind, reason: String) {
+        self.candidates.push(NetCandidate { kind, score: None, family_scores: [None; 2], tangent_area_fraction: 0.0, rejected: Some(reason) });
+    }
+
+    fn has_acceptable(&self) -> bool {
+        self.best.as_ref().is_some_and(|(index, _, _)| {
+            let candidate = &self.candidates[*index];
+            candidate.tangent_area_fraction <= MAX_TANGENT_AREA && candidate.family_scores.iter().all(|s| s.is_some_and(|s| s <= self.options.acceptable_score))
+        })
+    }
+
+    /// Runs the short net solve from `fields` and scores where it ends. Errors only for invalid
+    /// parameters; a pair whose solve or measure fails is rejected.
+    fn probe(&mut self, kind: NetStartKind, fields: &[Vec<f64>]) -> Result<(), SearchError> {
+        let mut params = self.params.clone();
+        for stage in &mut params.field.schedule {
+            stage.iterations = stage.iterations.min(self.options.probe_warm_up);
+        }
+        params.field.schedule.retain(|stage| stage.iterations > 0);
+        let mut solver = match NetSolver::new(self.mesh, fields, params) {
+            Ok(solver) => solver,
+            Err(error @ FieldError::InvalidParameter { .. }) => return Err(SearchError::Field(error)),
+            Err(error) => {
+                self.reject(kind, format!("cannot start: {error}"));
+                return Ok(());
+            }
+        };
+        let report = match solver.step(self.options.probe_iterations) {
+            Ok(report) => report,
+            Err(error) => {
+                self.reject(kind, format!("short solve failed: {error}"));
+                return Ok(());
+            }
+        };
+        let probed = solver.fields();
+        let vertices = self.mesh.vertex_count() as f64;
+        let mut family_scores = [None; 2];
+        for k in 0..2 {
+            let family = self.params.families[k];
+            let singular = report.families[k].singular_vertices.len() as f64 / vertices;
+            match level_curve_measure(self.mesh, &probed[k], family, self.options).and_then(|measure| family_score(&measure, family, singular)) {
+                Ok(score) => family_scores[k] = Some(score),
+                Err(reason) => {
+                    self.reject(kind, format!("family {}: {reason}", k + 1));
+                    return Ok(());
+                }
+            }
+        }
+        let areas = self.mesh.face_areas();
+        let below: f64 = intersection_angles(self.mesh, &probed[0], &probed[1])
+            .into_iter()
+            .zip(areas)
+            .filter(|(angle, _)| angle.is_none_or(|a| a < self.params.min_intersection_degrees + CLEARANCE_DEGREES))
+            .fold(0.0, |sum, (_, area)| sum + area);
+        let tangent_area_fraction = below / areas.iter().sum::<f64>();
+        let score = family_scores.iter().flatten().sum::<f64>() + TANGENT_PENALTY * tangent_area_fraction;
+        let index = self.candidates.len();
+        self.candidates.push(NetCandidate { kind, score: Some(score), family_scores, tangent_area_fraction, rejected: None });
+        if self.best.as_ref().is_none_or(|(_, best, _)| score < *best) {
+            self.best = Some((index, score, probed));
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::surfaces::hall_roof;
+
+    #[test]
+    fn pairs_tilt_each_principal_axis_both_ways_with_every_orientation_of_a_family() {
+        let mesh = hall_roof(400).into_mesh().unwrap();
+        let p60 = Family::PseudoGeodesic { theta_degrees: 60.0 };
+        assert_eq!(pair_candidates(&mesh, &NetParams::new(p60, p60)).len(), 8);
+        assert_eq!(pair_candidates(&mesh, &NetParams::new(p60, Family::Geodesic)).len(), 4);
+        let pairs = pair_candidates(&mesh, &NetParams::new(Family::Asymptotic, Family::Asymptotic));
+        assert_eq!(pairs.len(), 2);
+        for (_, fields) in &pairs {
+            // Two heights 2α apart: their gradients (constant on the flat part) cross at 2α.
+            let angles: Vec<f64> = intersection_angles(&mesh, &fields[0], &fields[1]).into_iter().flatten().collect();
+            let in_plan = angles.iter().filter(|a| (**a - 2.0 * PAIR_HALF_ANGLE_DEGREES).abs() < 15.0).count();
+            assert!(in_plan * 2 > angles.len(), "{in_plan} of {} faces cross near 60°", angles.len());
+        }
+    }
+
+    #[test]
+    fn a_web_starts_from_the_separate_searches_only() {
+        let mesh = hall_roof(400).into_mesh().unwrap();
+        let params = NetParams::web(Family::Geodesic, Family::Geodesic, Family::Geodesic);
+        let start = net_start_search(&mesh, &params, &SearchOptions::default()).unwrap();
+        assert_eq!(start.fields.len(), 2);
+        assert_eq!(start.candidates.len(), 1);
+        assert_eq!(start.candidates[0].kind, NetStartKind::Separate);
+    }
 }

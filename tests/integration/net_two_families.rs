@@ -106,14 +106,13 @@ fn worst_quad_against_the_roof(strip: &RectifyingStrip, theta: f64) -> f64 {
     worst
 }
 
-/// A PP net of 60° on the hall roof, solved from the default start. Paper Sec. 4.1 asks for both
-/// families at θ and a minimum crossing; what the solver reaches from this start is a known miss
-/// (README, nets). What must hold either way is an honest account: each family's strip verdict
-/// agrees with the curves measured from outside (three-point binormals against the smooth normal,
-/// `the exact roof's normal), the report's crossing angle is the one of the fields, and a net the
-/// verdicts accept also has every node on both of its strips.
+/// A PP net of 60° on the hall roof from the default start (paper Sec. 4.1, Table 1 PP): every
+/// strip of both families within 2° of θ against the exact roof normal, every crossing of the two
+/// fields at or above the asked minimum angle, and the verdicts agree with that outside measure.
+/// The mirror families the single-family searches pick cross tangentially along a line of the
+/// roof; the start's pair candidates avoid that.
 #[test]
-fn a_pp_net_of_sixty_degrees_on_the_hall_roof_is_reported_as_it_is() {
+fn a_pp_net_of_sixty_degrees_on_the_hall_roof_meets_theta_and_the_minimum_angle() {
     let mesh = hall_roof(900).into_mesh().expect("valid roof");
     let theta = 60.0;
     let min_angle = 30.0;
@@ -123,23 +122,18 @@ fn a_pp_net_of_sixty_degrees_on_the_hall_roof_is_reported_as_it_is() {
     let report = solver.report();
     let patterns = [0, 1].map(|k| strips_of(&mesh, &solver, k, 8, theta));
     for (k, pattern) in patterns.iter().enumerate() {
+        assert!(pattern.strips.len() >= 6, "family {k}: {} strips", pattern.strips.len());
         let worst = pattern.strips.iter().map(|s| worst_quad_against_the_roof(s, theta)).fold(0.0, f64::max);
-        if pattern.verdict.is_acceptable() {
-            assert!(worst <= pattern.verdict.tolerance_degrees + 0.5, "family {k}: accepted with a quad {worst:.2}° off the exact roof");
-            assert!(pattern.metrics.flipped_quads == 0 && pattern.metrics.max_e_straight < 1e-3, "family {k}: accepted with {:?}", pattern.metrics);
-        } else {
-            assert!(!pattern.verdict.message().starts_with("acceptable"), "family {k}: {}", pattern.verdict.message());
-        }
-        if worst > pattern.verdict.tolerance_degrees + 0.5 {
-            assert!(!pattern.verdict.is_acceptable(), "family {k}: a quad is {worst:.2}° off the exact roof, yet the strips are accepted");
-        }
+        assert!(worst <= 2.0, "family {k}: a quad is {worst:.2}° off θ against the exact roof");
+        assert!(pattern.verdict.is_acceptable(), "family {k}: {}", pattern.verdict.message());
+        assert!(pattern.metrics.flipped_quads == 0 && pattern.metrics.max_e_straight < 1e-3, "family {k}: {:?}", pattern.metrics);
     }
     // The report's smallest crossing is the fields' own (recomputed from their gradients).
     let angles: Vec<f64> = intersection_angles(&mesh, &solver.field(0), &solver.field(1)).into_iter().flatten().collect();
     let smallest = angles.iter().copied().fold(90.0, f64::min);
     assert!((smallest - report.intersection.min_degrees).abs() < 1e-9, "report {} against {smallest}", report.intersection.min_degrees);
-    let below = angles.iter().filter(|a| **a < min_angle).count();
-    assert_eq!(below, report.intersection.faces_below_min, "faces crossing below {min_angle}°");
+    assert!(smallest >= min_angle, "the families cross at {smallest:.2}°, below the asked {min_angle}°");
+    assert_eq!(report.intersection.faces_below_min, 0);
     // The net at the strips' levels and its nodes, whatever the verdict: every node is an exact
     // crossing of the two fields' levels and lies on both strips at the arc lengths it states.
     let (f, g) = (solver.field(0), solver.field(1));

@@ -23,7 +23,7 @@ use lamella::fabrication::{plan_fabrication, FabricationStrip};
 use lamella::field::Family;
 use lamella::initialisation::SearchOptions;
 use lamella::mesh::TriMesh;
-use lamella::net::{flat_point, strip_net, strip_web, web_levels, NetParams, NetReport, NetSolver, Node, QuadNet, StripNet, StripWeb, Web};
+use lamella::net::{flat_point, net_start_search, strip_net, strip_web, web_levels, NetParams, NetReport, NetSolver, NetStart, Node, QuadNet, StripNet, StripWeb, Web};
 use lamella::strips::{PatternMetrics, StripPattern, VertexDiagnostics};
 use serde_json::{json, Value};
 use std::fmt::Write as _;
@@ -84,14 +84,15 @@ pub fn family_label(family: &Family) -> String {
 /// the minimum angle is held by a penalty (Sec. 4.1), which lets a face sit just under it.
 const MIN_ANGLE_SLACK_DEGREES: f64 = 1.0;
 
-/// The net optimisation to run, its surface and the surface's name: continued from --resume, or
-/// new from the default start of --families on --mesh.
-fn start(args: &NetArgs) -> CliResult<(NetSolver, TriMesh, String)> {
+/// The net optimisation to run, its surface, the surface's name and the default start it came
+/// from (with the seconds its search took): continued from --resume, or new from the default
+/// start of --families on --mesh.
+fn start(args: &NetArgs) -> CliResult<(NetSolver, TriMesh, String, Option<(NetStart, f64)>)> {
     if let Some(path) = &args.resume {
         let bytes = read_bytes(path)?;
         let solver = NetSolver::from_bytes(&bytes).map_err(|e| CliError::bad_input(format!("{}: not a usable net session: {e}", path.display())))?;
         let mesh = solver.mesh();
-        return Ok((solver, mesh, format!("net session {}", path.display())));
+        return Ok((solver, mesh, format!("net session {}", path.display()), None));
     }
     // Invariant: clap requires --families unless --resume is given.
     let families = parse_families(args.families.as_deref().ok_or_else(|| CliError::bad_input("give --families"))?)?;
@@ -103,16 +104,42 @@ fn start(args: &NetArgs) -> CliResult<(NetSolver, TriMesh, String)> {
     params.min_intersection_degrees = args.min_angle;
     params.validate().map_err(|e| CliError::bad_input(format!("net: {e}")))?;
     let mesh = load_mesh(args.mesh.mesh.as_deref())?;
-    let fields = lamella::net::net_start(&mesh, &params, &SearchOptions::default()).map_err(|e| CliError::bad_input(format!("start: {e}")))?;
-    let solver = NetSolver::new(&mesh, &fields, params).map_err(|e| CliError::bad_input(format!("net: {e}")))?;
-    Ok((solver, mesh, mesh_name(args.mesh.mesh.as_deref())))
+    let searched = Instant::now();
+    let start = net_start_search(&mesh, &params, &SearchOptions::default()).map_err(|e| CliError::bad_input(format!("start: {e}")))?;
+    let solver = NetSolver::new(&mesh, &start.fields, params).map_err(|e| CliError::bad_input(format!("net: {e}")))?;
+    Ok((solver, mesh, mesh_name(args.mesh.mesh.as_deref()), Some((start, searched.elapsed().as_secs_f64()))))
+}
+
+/// One line on the default start: the pairs probed and the one continued from.
+fn start_line(start: &NetStart, seconds: f64) -> String {
+    let on = start.proxy_vertices.map_or(String::new(), |n| format!(" on a {n}-vertex coarsening"));
+    let winner = &start.candidates[start.winner];
+    format!("start: {} candidate pairs in {seconds:.1} s{on}; continuing from {}", start.candidates.len(), winner.kind.describe())
+}
+
+/// report.json's `start`: every candidate pair with its scores, the winner and the time.
+fn start_json(start: &NetStart, seconds: f64) -> Value {
+    let candidates: Vec<Value> = start
+        .candidates
+        .iter()
+        .map(|c| {
+            json!({
+                "start": c.kind.describe(),
+                "score": c.score.map_or(Value::Null, number),
+                "family_scores": c.family_scores.iter().map(|s| s.map_or(Value::Null, number)).collect::<Vec<_>>(),
+                "area_below_min_angle": number(c.tangent_area_fraction),
+                "rejected": c.rejected,
+            })
+        })
+        .collect();
+    json!({ "candidates": candidates, "winner": start.winner, "proxy_vertices": start.proxy_vertices, "seconds": number(seconds) })
 }
 
 pub fn run(args: &NetArgs) -> CliResult<()> {
     let started = Instant::now();
     let verbosity = Verbosity::from(args.verbosity);
     let fabrication = fabrication_files::requested(&args.fabrication).then(|| fabrication_files::params(&args.fabrication, None)).transpose()?;
-    let (mut solver, mesh, name) = start(args)?;
+    let (mut solver, mesh, name, searched) = start(args)?;
     if args.kagome && !solver.params().is_web() {
         return Err(CliError::bad_input("--kagome: a Kagome pattern needs three --families (a 3-web)"));
     }
@@ -121,6 +148,9 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
     let out = OutputDir::create(&target, args.out.force)?;
     let labels: Vec<String> = families.iter().map(family_label).collect();
     note(verbosity, &format!("{name}: {} vertices; net {}, from iteration {}", mesh.vertex_count(), labels.join(", "), solver.iterations()));
+    if let Some((start, seconds)) = &searched {
+        note(verbosity, &start_line(start, *seconds));
+    }
     while solver.iterations() < args.max_iterations && !solver.is_converged() {
         let report = solver.step(STEP.min(args.max_iterations - solver.iterations())).map_err(|e| CliError::internal(format!("net solve: {e}")))?;
         if verbosity == Verbosity::Verbose {
@@ -177,6 +207,9 @@ pub fn run(args: &NetArgs) -> CliResult<()> {
     let mut report = report_json(&name, &labels, &solver, &runs, &built, &nodes, [field_seconds, strips_seconds, started.elapsed().as_secs_f64()]);
     if let (Some(plan), Some(root)) = (&plan, report.as_object_mut()) {
         root.insert("fabrication".into(), report_section(plan));
+    }
+    if let (Some((start, seconds)), Some(root)) = (&searched, report.as_object_mut()) {
+        root.insert("start".into(), start_json(start, *seconds));
     }
     out.write("report.json", serde_json::to_string_pretty(&report).map_err(|e| CliError::internal(format!("report.json: {e}")))?)?;
     let target = out.target().display().to_string();
