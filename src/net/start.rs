@@ -11,15 +11,18 @@
 //! 2. only if that pair is not acceptable: pairs of heights along `a cos α ± b sin α`, for each
 //!    principal axis `a` of the surface (`b` the other one in the principal plane) and
 //!    α = [`PAIR_HALF_ANGLE_DEGREES`], each height with both signs where the family has two
-//!    orientations (a pseudo-geodesic family and its mirror 180° − θ).
+//!    orientations (a pseudo-geodesic family and its mirror 180° − θ). A 3-web's pairs are its
+//!    first two fields, the third starting as `−F − H`.
 //!
 //! Every pair is probed by a short net solve (on the start search's stand-in of a large mesh) and
-//! scored: the sum of both families' scores along their level curves
+//! scored: the sum of the families' scores along their level curves
 //! ([`crate::initialisation::StartSearch`]'s judge) plus [`TANGENT_PENALTY`] per unit of the
 //! surface area where the families cross less than [`CLEARANCE_DEGREES`] above the minimum angle.
 //! A pair is acceptable when each family scores at most [`SearchOptions::acceptable_score`] and at
-//! most [`MAX_TANGENT_AREA`] of the area crosses that close. A 3-web starts from its first two families' separate searches.
+//! most [`MAX_TANGENT_AREA`] of the area crosses that close. A 3-web is probed as a web: the
+//! scores of its three families, the closest-crossing pair's area.
 
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use super::intersection::intersection_angles;
@@ -85,10 +88,10 @@ pub struct NetCandidate {
     pub kind: NetStartKind,
     /// Lower is better; `None` when rejected.
     pub score: Option<f64>,
-    /// Each family's own score after the short solve, when measured.
-    pub family_scores: [Option<f64>; 2],
-    /// Fraction of the area where the families cross within [`CLEARANCE_DEGREES`] of the minimum
-    /// angle (or below it) after the short solve.
+    /// Each family's own score after the short solve (three for a 3-web), when measured.
+    pub family_scores: Vec<Option<f64>>,
+    /// Fraction of the area where two families cross within [`CLEARANCE_DEGREES`] of the minimum
+    /// angle (or below it) after the short solve: the largest over the pairs of a 3-web.
     pub tangent_area_fraction: f64,
     /// Why the candidate was rejected.
     pub rejected: Option<String>,
@@ -118,11 +121,6 @@ pub fn net_start(mesh: &TriMesh, params: &NetParams, options: &SearchOptions) ->
 pub fn net_start_search(mesh: &TriMesh, params: &NetParams, options: &SearchOptions) -> Result<NetStart, SearchError> {
     params.validate().map_err(SearchError::Field)?;
     let separate = separate_starts(mesh, params, options);
-    if params.is_web() {
-        let fields = separate?;
-        let candidate = NetCandidate { kind: NetStartKind::Separate, score: None, family_scores: [None; 2], tangent_area_fraction: 0.0, rejected: None };
-        return Ok(NetStart { fields, candidates: vec![candidate], winner: 0, proxy_vertices: None });
-    }
     let proxy = search_proxy(mesh, options.proxy_vertices);
     let mut search = PairSearch { mesh: proxy.as_ref().unwrap_or(mesh), params, options, candidates: Vec::new(), best: None };
     match separate {
@@ -131,15 +129,14 @@ pub fn net_start_search(mesh: &TriMesh, params: &NetParams, options: &SearchOpti
                 Some(proxy) => fields.iter().map(|field| carried_to(mesh, field, proxy)).collect(),
                 None => fields,
             };
-            search.probe(NetStartKind::Separate, &on_probed)?;
+            let probed = search.probe(&on_probed)?;
+            search.record(NetStartKind::Separate, probed);
         }
         Err(SearchError::NoStart { reasons }) => search.reject(NetStartKind::Separate, format!("no start: {}", reasons.join("; "))),
         Err(error) => return Err(error),
     }
     if !search.has_acceptable() {
-        for (kind, fields) in pair_candidates(search.mesh, params) {
-            search.probe(kind, &fields)?;
-        }
+        search.probe_all(pair_candidates(search.mesh, params))?;
     }
     let Some((winner, _, probed)) = search.best.take() else {
         let reasons = search.candidates.iter().map(|c| format!("{}: {}", c.kind.describe(), c.rejected.as_deref().unwrap_or("not probed"))).collect();
@@ -204,13 +201,17 @@ struct PairSearch<'a> {
     params: &'a NetParams,
     options: &'a SearchOptions,
     candidates: Vec<NetCandidate>,
-    /// Index, score and the fields the short solve reached.
+    /// Index, score and the given fields the short solve reached.
     best: Option<(usize, f64, Vec<Vec<f64>>)>,
 }
 
+/// Where a candidate's short net solve ended: every family's score, the close-crossing area and
+/// the fields; or why it was rejected.
+type Probed = Result<(Vec<f64>, f64, Vec<Vec<f64>>), String>;
+
 impl PairSearch<'_> {
     fn reject(&mut self, kind: NetStartKind, reason: String) {
-        self.candidates.push(NetCandidate { kind, score: None, family_scores: [None; 2], tangent_area_fraction: 0.0, rejected: Some(reason) });
+        self.candidates.push(NetCandidate { kind, score: None, family_scores: Vec::new(), tangent_area_fraction: 0.0, rejected: Some(reason) });
     }
 
     fn has_acceptable(&self) -> bool {
@@ -220,9 +221,33 @@ impl PairSearch<'_> {
         })
     }
 
-    /// Runs the short net solve from `fields` and scores where it ends. Errors only for invalid
-    /// parameters; a pair whose solve or measure fails is rejected.
-    fn probe(&mut self, kind: NetStartKind, fields: &[Vec<f64>]) -> Result<(), SearchError> {
+    /// Probes every candidate (in parallel: each short solve is independent, and they are
+    /// recorded in order, so the outcome does not depend on the number of threads).
+    fn probe_all(&mut self, candidates: Vec<(NetStartKind, Vec<Vec<f64>>)>) -> Result<(), SearchError> {
+        let outcomes: Vec<Result<Probed, SearchError>> = candidates.par_iter().map(|(_, fields)| self.probe(fields)).collect();
+        for ((kind, _), outcome) in candidates.into_iter().zip(outcomes) {
+            self.record(kind, outcome?);
+        }
+        Ok(())
+    }
+
+    fn record(&mut self, kind: NetStartKind, probed: Probed) {
+        let (scores, tangent_area_fraction, fields) = match probed {
+            Ok(probed) => probed,
+            Err(reason) => return self.reject(kind, reason),
+        };
+        let score = scores.iter().sum::<f64>() + TANGENT_PENALTY * tangent_area_fraction;
+        let index = self.candidates.len();
+        let family_scores = scores.into_iter().map(Some).collect();
+        self.candidates.push(NetCandidate { kind, score: Some(score), family_scores, tangent_area_fraction, rejected: None });
+        if self.best.as_ref().is_none_or(|(_, best, _)| score < *best) {
+            self.best = Some((index, score, fields));
+        }
+    }
+
+    /// Runs the short net solve from `fields` and measures where it ends. Errors only for invalid
+    /// parameters; `Ok(Err(reason))` rejects the candidate.
+    fn probe(&self, fields: &[Vec<f64>]) -> Result<Probed, SearchError> {
         let mut params = self.params.clone();
         for stage in &mut params.field.schedule {
             stage.iterations = stage.iterations.min(self.options.probe_warm_up);
@@ -231,46 +256,40 @@ impl PairSearch<'_> {
         let mut solver = match NetSolver::new(self.mesh, fields, params) {
             Ok(solver) => solver,
             Err(error @ FieldError::InvalidParameter { .. }) => return Err(SearchError::Field(error)),
-            Err(error) => {
-                self.reject(kind, format!("cannot start: {error}"));
-                return Ok(());
-            }
+            Err(error) => return Ok(Err(format!("cannot start: {error}"))),
         };
         let report = match solver.step(self.options.probe_iterations) {
             Ok(report) => report,
-            Err(error) => {
-                self.reject(kind, format!("short solve failed: {error}"));
-                return Ok(());
-            }
+            Err(error) => return Ok(Err(format!("short solve failed: {error}"))),
         };
         let probed = solver.fields();
         let vertices = self.mesh.vertex_count() as f64;
-        let mut family_scores = [None; 2];
-        for k in 0..2 {
+        let mut scores = Vec::with_capacity(probed.len());
+        for (k, field) in probed.iter().enumerate() {
             let family = self.params.families[k];
             let singular = report.families[k].singular_vertices.len() as f64 / vertices;
-            match level_curve_measure(self.mesh, &probed[k], family, self.options).and_then(|measure| family_score(&measure, family, singular)) {
-                Ok(score) => family_scores[k] = Some(score),
-                Err(reason) => {
-                    self.reject(kind, format!("family {}: {reason}", k + 1));
-                    return Ok(());
-                }
+            match level_curve_measure(self.mesh, field, family, self.options).and_then(|measure| family_score(&measure, family, singular)) {
+                Ok(score) => scores.push(score),
+                Err(reason) => return Ok(Err(format!("family {}: {reason}", k + 1))),
             }
         }
+        let pairs: &[(usize, usize)] = if self.params.is_web() { &[(0, 1), (0, 2), (1, 2)] } else { &[(0, 1)] };
+        let close = pairs.iter().map(|&(a, b)| self.close_crossing_area(&probed[a], &probed[b])).fold(0.0, f64::max);
+        // A 3-web is started from its first two fields (the third is −F − H).
+        let given = if self.params.is_web() { 2 } else { probed.len() };
+        Ok(Ok((scores, close, probed[..given].to_vec())))
+    }
+
+    /// Fraction of the area where the level sets of `f` and `g` cross less than
+    /// [`CLEARANCE_DEGREES`] above the minimum angle (or not at all).
+    fn close_crossing_area(&self, f: &[f64], g: &[f64]) -> f64 {
         let areas = self.mesh.face_areas();
-        let below: f64 = intersection_angles(self.mesh, &probed[0], &probed[1])
+        let close = intersection_angles(self.mesh, f, g)
             .into_iter()
             .zip(areas)
             .filter(|(angle, _)| angle.is_none_or(|a| a < self.params.min_intersection_degrees + CLEARANCE_DEGREES))
             .fold(0.0, |sum, (_, area)| sum + area);
-        let tangent_area_fraction = below / areas.iter().sum::<f64>();
-        let score = family_scores.iter().flatten().sum::<f64>() + TANGENT_PENALTY * tangent_area_fraction;
-        let index = self.candidates.len();
-        self.candidates.push(NetCandidate { kind, score: Some(score), family_scores, tangent_area_fraction, rejected: None });
-        if self.best.as_ref().is_none_or(|(_, best, _)| score < *best) {
-            self.best = Some((index, score, probed));
-        }
-        Ok(())
+        close / areas.iter().sum::<f64>()
     }
 }
 
@@ -296,12 +315,16 @@ mod tests {
     }
 
     #[test]
-    fn a_web_starts_from_the_separate_searches_only() {
+    fn the_start_has_the_same_bits_on_any_number_of_threads() {
         let mesh = hall_roof(400).into_mesh().unwrap();
-        let params = NetParams::web(Family::Geodesic, Family::Geodesic, Family::Geodesic);
-        let start = net_start_search(&mesh, &params, &SearchOptions::default()).unwrap();
-        assert_eq!(start.fields.len(), 2);
-        assert_eq!(start.candidates.len(), 1);
-        assert_eq!(start.candidates[0].kind, NetStartKind::Separate);
+        let p60 = Family::PseudoGeodesic { theta_degrees: 60.0 };
+        let params = NetParams::new(p60, p60);
+        let on = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+            pool.install(|| net_start_search(&mesh, &params, &SearchOptions::default()).unwrap())
+        };
+        let (one, two) = (on(1), on(2));
+        assert!(one.candidates.len() > 1, "the pairs were probed: {:?}", one.candidates);
+        assert_eq!(one, two);
     }
 }
