@@ -316,3 +316,34 @@ fn an_aag_web_is_written_as_triangles_with_its_three_families_and_a_kagome_patte
     let report = read_json(&dir.path("opt/report.json"));
     assert_eq!(report["families"].as_array().map(Vec::len), Some(3), "{report}");
 }
+
+/// `--start-field` per family replaces the default start: on z = xy/5 the heights x and y, whose
+/// level sets are the two families of rulings, give the AA net of the rulings themselves.
+#[test]
+fn a_net_starts_from_the_fields_given_per_family() {
+    let dir = Scratch::new("net-start-fields");
+    let mesh_path = hypar_obj(&dir);
+    let (vertices, _, _) = obj_elements(&std::fs::read_to_string(&mesh_path).expect("hypar.obj"));
+    for (name, axis) in [("x.csv", 0), ("y.csv", 1)] {
+        let values: String = vertices.iter().map(|p| format!("{}\n", p[axis])).collect();
+        std::fs::write(dir.path(name), values).expect("write");
+    }
+    let mesh = mesh_path.to_str().expect("path");
+    let output = lamella(&dir.0, &["net", "--mesh", mesh, "--families", "A,A", "--start-field", "x.csv", "--start-field", "y.csv", "--lines", "6", "--out", "out", "--quiet"]);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    let report = read_json(&dir.path("out/report.json"));
+    assert!(report.get("start").is_none(), "no default start was searched: {}", report["start"]);
+    // Rows run along x = const (the first field's levels), columns along y = const: every edge
+    // of a quad keeps x or y to a few millimetres.
+    let (net, quads, _) = obj_elements(&std::fs::read_to_string(dir.path("out/net.obj")).expect("net.obj"));
+    assert!(quads.len() >= 16, "{} quads", quads.len());
+    for quad in &quads {
+        for k in 0..4 {
+            let (a, b) = (net[quad[k]], net[quad[(k + 1) % 4]]);
+            assert!((a[0] - b[0]).abs() < 0.01 || (a[1] - b[1]).abs() < 0.01, "edge {a:?} → {b:?} runs along neither ruling");
+        }
+    }
+    assert_bad_input(&dir.0, &["net", "--mesh", mesh, "--families", "A,A", "--start-field", "x.csv", "--out", "o"], &["--start-field", "one per family", "got 1"]);
+    std::fs::write(dir.path("short.csv"), "1\n2\n").expect("write");
+    assert_bad_input(&dir.0, &["net", "--mesh", mesh, "--families", "A,A", "--start-field", "x.csv", "--start-field", "short.csv", "--out", "o"], &["short.csv", "2 values"]);
+}

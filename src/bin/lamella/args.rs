@@ -412,8 +412,14 @@ pub struct NetArgs {
     /// Continue a net optimisation saved by an earlier `net` (its net.bin: mesh, families,
     /// angles and both fields), bit for bit as if it had not stopped; --max-iterations includes
     /// the iterations it ran before.
-    #[arg(long, value_name = "net.bin", conflicts_with_all = ["mesh", "families", "angle", "min_angle"])]
+    #[arg(long, value_name = "net.bin", conflicts_with_all = ["mesh", "families", "angle", "min_angle", "start_field"])]
     pub resume: Option<PathBuf>,
+    /// Start a family from this field instead of the default start: one value per mesh vertex,
+    /// one per line (field.csv of `field` or `design`, e.g. started from guides or strokes).
+    /// Given once per family of a net, or for the first two of a 3-web, in --families order
+    /// [default: the default start of both]
+    #[arg(long, value_name = "F.csv")]
+    pub start_field: Vec<PathBuf>,
     /// Target intersection angle of the two families in degrees, in (0, 180), held as a weak term
     /// [default: none, only --min-angle is held].
     #[arg(long, value_name = "DEGREES")]

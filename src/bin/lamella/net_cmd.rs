@@ -14,6 +14,7 @@ use crate::mesh_input::{load_mesh, mesh_name, read_bytes};
 use crate::net_obj::net_obj;
 use crate::output_dir::OutputDir;
 use crate::progress::{note, summary, Verbosity};
+use crate::start_field::read_field_for;
 use crate::strip_obj::{curves_obj, strips_obj};
 use crate::strips_cmd::{build_strips, build_strips_at, StripRun};
 use crate::svg::cut_sheet::{cut_sheet_svg, CutMark, CutPiece};
@@ -104,10 +105,20 @@ fn start(args: &NetArgs) -> CliResult<(NetSolver, TriMesh, String, Option<(NetSt
     params.min_intersection_degrees = args.min_angle;
     params.validate().map_err(|e| CliError::bad_input(format!("net: {e}")))?;
     let mesh = load_mesh(args.mesh.mesh.as_deref())?;
+    let name = mesh_name(args.mesh.mesh.as_deref());
+    if !args.start_field.is_empty() {
+        let given = if params.is_web() { 2 } else { params.families.len() };
+        if args.start_field.len() != given {
+            return Err(CliError::bad_input(format!("--start-field: give one per family ({given} for these --families), got {}", args.start_field.len())));
+        }
+        let fields = args.start_field.iter().map(|path| read_field_for(&mesh, path)).collect::<CliResult<Vec<_>>>()?;
+        let solver = NetSolver::new(&mesh, &fields, params).map_err(|e| CliError::bad_input(format!("--start-field: {e}")))?;
+        return Ok((solver, mesh, name, None));
+    }
     let searched = Instant::now();
     let start = net_start_search(&mesh, &params, &SearchOptions::default()).map_err(|e| CliError::bad_input(format!("start: {e}")))?;
     let solver = NetSolver::new(&mesh, &start.fields, params).map_err(|e| CliError::bad_input(format!("net: {e}")))?;
-    Ok((solver, mesh, mesh_name(args.mesh.mesh.as_deref()), Some((start, searched.elapsed().as_secs_f64()))))
+    Ok((solver, mesh, name, Some((start, searched.elapsed().as_secs_f64()))))
 }
 
 /// One line on the default start: the pairs probed and the one continued from.
