@@ -1274,26 +1274,29 @@ LmlStatus lml_search_candidate_text(const struct LmlSearch *search,
                                     size_t *needed);
 
 // Writes the index of the best candidate so far (after `lml_search_field`: the one the field
-// continues from) to `*index`.
-// Returns `LML_STATUS_OK`, or `LML_STATUS_INVALID_ARGUMENT` (NULL argument, or no candidate
-// scored yet: every one so far was rejected).
+// continues from) to `*index`: the best scored one, or when none is scored the best of those
+// rejected only for nearly straight level curves (its `rejected` stays 1: every family the
+// search found is nearly straight over most of the surface, and the strips' verdict decides).
+// Returns `LML_STATUS_OK`, or `LML_STATUS_INVALID_ARGUMENT` (NULL argument, or no such
+// candidate yet: every one so far was rejected for another reason).
 LmlStatus lml_search_winner(const struct LmlSearch *search, size_t *index);
 
 // Writes to `*count` the vertex count of the coarsening the candidates are probed on, or 0
-// when they are probed on the mesh itself. A mesh of more than 1.5 × 3,000 vertices is
-// searched on a coarsening of about 3,000 vertices (a subset of its vertices, same outline and
+// when they are probed on the mesh itself. A mesh of more than 1.5 × 1,500 vertices is
+// searched on a coarsening of about 1,500 vertices (a subset of its vertices, same outline and
 // topology); the winner's field is carried to the full mesh by `lml_search_field`.
 // Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
 LmlStatus lml_search_proxy_vertex_count(const struct LmlSearch *search, size_t *count);
 
-// Takes the field of the best candidate: a new `LmlField` (owned by the caller, released with
+// Takes the field of the best candidate (`lml_search_winner`): a new `LmlField` (owned by the caller, released with
 // `lml_field_free`) that continues from where that candidate's short solve ended, with the
 // final weights; step it to convergence. Ends the search (its candidates stay readable).
 //
-// Returns `LML_STATUS_OK`; `LML_STATUS_SINGULAR_FIELD` (every candidate was rejected: the
-// message gives each reason; the search stays usable for reading); `LML_STATUS_INVALID_ARGUMENT`
+// Returns `LML_STATUS_OK`; `LML_STATUS_SINGULAR_FIELD` (every candidate was rejected, none only
+// for nearly straight level curves: the message gives each reason; the search stays usable for reading); `LML_STATUS_INVALID_ARGUMENT`
 // (NULL argument, the field was already taken). `*out` is set to NULL on failure.
-LmlStatus lml_search_field(struct LmlSearch *search, struct LmlField **out);
+LmlStatus lml_search_field(struct LmlSearch *search,
+                           struct LmlField **out);
 
 // Serialises the whole session (mesh, field, auxiliary variables, parameters, weight stage,
 // solver damping) as bytes: the magic `"LMLF"`, a little-endian `uint32_t` format version,

@@ -114,8 +114,8 @@ namespace Lamella
         }
 
         /// <summary>
-        /// The vertex count of the coarsening the candidates are probed on (a mesh of more than 1.5 × 3,000 vertices is
-        /// searched on a coarsening of about 3,000 of its own vertices, and <see cref="TakeField"/> carries the winner's
+        /// The vertex count of the coarsening the candidates are probed on (a mesh of more than 1.5 × 1,500 vertices is
+        /// searched on a coarsening of about 1,500 of its own vertices, and <see cref="TakeField"/> carries the winner's
         /// field to the full mesh); null when they are probed on the mesh itself.
         /// </summary>
         public int? ProxyVertexCount
@@ -162,35 +162,31 @@ namespace Lamella
             }
         }
 
-        /// <summary>The index of the best candidate so far (also after <see cref="TakeField"/>: the one the field continues from); null while none is scored.</summary>
+        /// <summary>
+        /// The index of the best candidate so far (also after <see cref="TakeField"/>: the one the field continues from):
+        /// the best scored one, or when none is scored the best of those rejected only for nearly straight level curves
+        /// (its <see cref="Candidate.IsRejected"/> stays true: every family found is nearly straight over most of the
+        /// surface, and the strips' verdict decides); null while there is neither.
+        /// </summary>
         public int? Winner
         {
             get
             {
                 if (taken) return takenWinner;
-                if (!AnyScored()) return null;
                 UIntPtr index;
-                Native.Check(NativeMethods.lml_search_winner(Handle, out index));
+                // The handle is live, so the only invalid argument left is "no winner yet".
+                Status status = NativeMethods.lml_search_winner(Handle, out index);
+                if (status == Status.InvalidArgument) return null;
+                Native.Check(status);
                 return Native.Count(index);
             }
-        }
-
-        private bool AnyScored()
-        {
-            for (int i = CandidateCount - 1; i >= 0; i--)
-            {
-                CandidateRecord record;
-                Native.Check(NativeMethods.lml_search_candidate(Handle, Native.Size(i), out record));
-                if (record.Scored != 0) return true;
-            }
-            return false;
         }
 
         /// <summary>
         /// Takes the field of the best candidate: a new session that continues from where that candidate's short solve
         /// ended, at the final weights; step it to convergence (the caller owns it). Ends the search; its candidates stay
         /// readable. Throws <see cref="LamellaException"/> with <see cref="Status.SingularField"/> when every candidate was
-        /// rejected (the message gives each reason; the search stays usable), and <see cref="InvalidOperationException"/>
+        /// rejected, none only for nearly straight level curves (the message gives each reason; the search stays usable), and <see cref="InvalidOperationException"/>
         /// when the field was already taken.
         /// </summary>
         public FieldSolver TakeField()

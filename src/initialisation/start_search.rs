@@ -28,6 +28,13 @@
 //! straight (a degenerate pseudo-geodesic family), when its level curves cannot be measured, or
 //! when its short solve fails; a start whose level curves are straight lines to begin with (90 %
 //! or more) is rejected without a solve.
+//!
+//! Where every candidate is rejected and some only for being nearly straight, the search falls
+//! back on the best of those (by the same score, penalties included) rather than give up: on a
+//! surface that is nearly flat at the model's scale for the asked θ (a helicoid's outer part at
+//! θ = 60°, say) every pseudo-geodesic family is nearly straight, and its strips can still meet
+//! θ. The winner then stays marked as rejected ([`Candidate::rejected`]), so that callers say
+//! so, and the strips' verdict judges the result as always.
 
 use std::collections::VecDeque;
 
@@ -141,6 +148,9 @@ pub struct StartSearch {
     candidates: Vec<Candidate>,
     /// The best candidate so far: its index and its field after the short solve.
     best: Option<(usize, f64, Vec<f64>)>,
+    /// The best of the candidates rejected only for nearly straight level curves, taken when no
+    /// candidate is accepted: as `best`.
+    fallback: Option<(usize, f64, Vec<f64>)>,
     guides_queued: bool,
     /// A field (on the probed mesh) whose level sets the candidates must cross at a mean angle
     /// of at least this many degrees: the other family of a net ([`Self::crossing`]).
@@ -179,6 +189,7 @@ impl StartSearch {
             pending: VecDeque::new(),
             candidates: Vec::new(),
             best: None,
+            fallback: None,
             guides_queued: false,
             crossing: None,
         };
@@ -214,13 +225,17 @@ impl StartSearch {
                     candidate.max_error_degrees = measure.max_error_degrees;
                     candidate.straight_fraction = measure.straight_fraction();
                     candidate.singular_vertices = singular;
-                    match self.score(&measure, singular).and_then(|score| self.check_crossing(&probed).map(|()| score)) {
-                        Err(reason) => candidate.rejected = Some(reason),
+                    let singular_fraction = singular as f64 / self.probed_mesh().vertex_count() as f64;
+                    match family_score(&measure, self.params.family, singular_fraction).and_then(|score| self.check_crossing(&probed).map(|()| score)) {
+                        Err(reason) => {
+                            if is_degenerate(&measure, self.params.family) && self.check_crossing(&probed).is_ok() {
+                                keep_lower(&mut self.fallback, index, penalised_score(&measure, singular_fraction), probed);
+                            }
+                            candidate.rejected = Some(reason);
+                        }
                         Ok(score) => {
                             candidate.score = Some(score);
-                            if self.best.as_ref().is_none_or(|(_, best, _)| score < *best) {
-                                self.best = Some((index, score, probed));
-                            }
+                            keep_lower(&mut self.best, index, score, probed);
                         }
                     }
                 }
@@ -276,9 +291,11 @@ impl StartSearch {
         self.proxy.as_ref().map(TriMesh::vertex_count)
     }
 
-    /// Index (into [`Self::candidates`]) of the best candidate so far.
+    /// Index (into [`Self::candidates`]) of the best candidate so far: the best accepted one,
+    /// else the best of those rejected only for nearly straight level curves (see the module
+    /// notes; its `rejected` says why it would have been).
     pub fn winner(&self) -> Option<usize> {
-        self.best.as_ref().map(|(i, _, _)| *i)
+        self.best.as_ref().or(self.fallback.as_ref()).map(|(i, _, _)| *i)
     }
 
     /// Probes every remaining candidate.
@@ -290,9 +307,10 @@ impl StartSearch {
     /// The solver for the winner: restarted from the field its short solve reached (carried to
     /// the mesh when probed on a coarsening), with the final weights of `params` (its warm-up is
     /// behind it), ready to be stepped to convergence.
-    /// `Err(NoStart)` names every candidate's reason when all were rejected.
+    /// `Err(NoStart)` names every candidate's reason when all were rejected and none of them
+    /// only for nearly straight level curves.
     pub fn into_solver(mut self) -> Result<FieldSolver, SearchError> {
-        let Some((_, _, probed)) = self.best.take() else {
+        let Some((_, _, probed)) = self.best.take().or(self.fallback.take()) else {
             let reasons = self.candidates.iter().map(|c| format!("{}: {}", c.kind.describe(), c.rejected.as_deref().unwrap_or("not probed"))).collect();
             return Err(SearchError::NoStart { reasons });
         };
@@ -407,8 +425,13 @@ impl StartSearch {
         level_curve_measure(self.probed_mesh(), field, self.params.family, &self.options)
     }
 
-    fn score(&self, measure: &FamilyAngles, singular: usize) -> Result<f64, String> {
-        family_score(measure, self.params.family, singular as f64 / self.probed_mesh().vertex_count() as f64)
+}
+
+/// Keeps `(index, score, field)` in `slot` when the slot is empty or holds a higher score (the
+/// earlier candidate wins a tie).
+fn keep_lower(slot: &mut Option<(usize, f64, Vec<f64>)>, index: usize, score: f64, field: Vec<f64>) {
+    if slot.as_ref().is_none_or(|(_, kept, _)| score < *kept) {
+        *slot = Some((index, score, field));
     }
 }
 
@@ -431,11 +454,21 @@ pub(crate) fn family_score(measure: &FamilyAngles, family: Family, singular_frac
     if measure.measured == 0 {
         return Err("no level curve could be measured".into());
     }
-    let straight = measure.straight_fraction();
-    if matches!(family, Family::PseudoGeodesic { .. }) && straight > MAX_STRAIGHT_FRACTION {
-        return Err(format!("degenerate: {:.0} % of the level curves are nearly straight, where a pseudo-geodesic has no binormal", 100.0 * straight));
+    if is_degenerate(measure, family) {
+        return Err(format!("degenerate: {:.0} % of the level curves are nearly straight, where a pseudo-geodesic has no binormal", 100.0 * measure.straight_fraction()));
     }
-    Ok(measure.rms_error_degrees + 0.25 * measure.max_error_degrees + STRAIGHT_PENALTY * straight + SINGULAR_PENALTY * singular_fraction)
+    Ok(penalised_score(measure, singular_fraction))
+}
+
+/// A pseudo-geodesic family with some curve measured and more than [`MAX_STRAIGHT_FRACTION`] of
+/// its points nearly straight.
+fn is_degenerate(measure: &FamilyAngles, family: Family) -> bool {
+    matches!(family, Family::PseudoGeodesic { .. }) && measure.measured > 0 && measure.straight_fraction() > MAX_STRAIGHT_FRACTION
+}
+
+/// The score of [`family_score`] without its rejections.
+fn penalised_score(measure: &FamilyAngles, singular_fraction: f64) -> f64 {
+    measure.rms_error_degrees + 0.25 * measure.max_error_degrees + STRAIGHT_PENALTY * measure.straight_fraction() + SINGULAR_PENALTY * singular_fraction
 }
 
 /// What [`search_start`] found: the solver to continue, every candidate and the winner.

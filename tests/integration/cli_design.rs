@@ -141,6 +141,31 @@ fn a_surface_without_the_family_exits_three_with_the_verdict() {
 }
 
 #[test]
+fn where_every_start_is_nearly_straight_the_design_goes_on_and_says_so() {
+    // A helicoid at θ = 60° (see design_default_start): every candidate's family is nearly
+    // straight over most of the surface. The design continues from the best of them (before, it
+    // stopped with exit 2 and no outputs), warns, marks the start in report.json, and the strips'
+    // verdict gives the exit code.
+    let dir = Scratch::new("fallback");
+    let mesh = crate::design_default_start::helicoid(2000);
+    mesh.write_obj(std::fs::File::create(dir.path("helicoid.obj")).expect("create")).expect("write");
+    let output = lamella(&dir.0, &["design", "--mesh", "helicoid.obj", "--theta", "60", "--out", "d"]);
+    let err = stderr(&output);
+    assert!(matches!(output.status.code(), Some(0 | 3)), "{err}");
+    assert!(err.contains("warning: every start leads to nearly straight level curves"), "{err}");
+    let report = read_json(&dir.path("d/report.json"));
+    let start = &report["parameters"]["start"];
+    assert_eq!(start["fallback"], true, "{start}");
+    let winner = start["winner"].as_u64().expect("a winner") as usize;
+    let reason = start["candidates"][winner]["rejected"].as_str().expect("the winner's rejection");
+    assert!(reason.contains("nearly straight"), "{reason}");
+    // The exit code is the strips' verdict.
+    let acceptable = report["strips"]["acceptable"].as_bool().expect("verdict");
+    assert_eq!(output.status.code(), Some(if acceptable { 0 } else { 3 }), "{err}");
+    assert!(dir.path("d/strips.obj").is_file() && dir.path("d/field.csv").is_file());
+}
+
+#[test]
 fn family_names_and_their_angles_must_agree() {
     let dir = Scratch::new("family");
     for (args, needle) in [

@@ -61,7 +61,12 @@ fn worst_catenary_deviation(mesh: &TriMesh, field: &[f64], theta: f64) -> f64 {
 /// The signed angle (Sec. 3.1) of each strip quad's plane against the exact normal `normal`:
 /// the quad's direction across its centre line, `ê × N̂`, compared with θ (without sign at 0°).
 pub(crate) fn worst_quad_angle_error(pattern: &StripPattern, theta: f64, normal: impl Fn(&Vec3) -> Vec3) -> f64 {
-    let mut worst: f64 = 0.0;
+    quad_angle_errors(pattern, theta, normal).into_iter().fold(0.0, f64::max)
+}
+
+/// The angle error of [`worst_quad_angle_error`] of every quad, strip by strip.
+fn quad_angle_errors(pattern: &StripPattern, theta: f64, normal: impl Fn(&Vec3) -> Vec3) -> Vec<f64> {
+    let mut errors = Vec::new();
     for strip in &pattern.strips {
         for j in 0..strip.centre.len() - 1 {
             let edge = (strip.centre[j + 1] - strip.centre[j]).normalize();
@@ -71,11 +76,10 @@ pub(crate) fn worst_quad_angle_error(pattern: &StripPattern, theta: f64, normal:
             let sign = if across.dot(&n.cross(&edge)) < 0.0 { -1.0 } else { 1.0 };
             let angle = (sign * across.dot(&n)).clamp(-1.0, 1.0).acos().to_degrees();
             // At θ = 0° (asymptotic curves) a binormal at 180° is the same family.
-            let error = if theta == 0.0 { angle.min(180.0 - angle) } else { (angle - theta).abs() };
-            worst = worst.max(error);
+            errors.push(if theta == 0.0 { angle.min(180.0 - angle) } else { (angle - theta).abs() });
         }
     }
-    worst
+    errors
 }
 
 fn strips(mesh: &TriMesh, field: &[f64], theta: f64) -> StripPattern {
@@ -208,4 +212,69 @@ fn a_cone_carries_a_sixty_degree_family_with_acceptable_strips() {
     let error = worst_quad_angle_error(&pattern, 60.0, normal);
     assert!(error <= 1.5, "a strip plane is {error}° off against the exact normal");
     assert!(pattern.metrics.max_planar <= 1e-5 && pattern.metrics.max_e_straight <= 1e-3, "{:?}", pattern.metrics);
+}
+
+/// Pitch of the helicoid below, per radian.
+const HELICOID_PITCH: f64 = 1.2;
+
+/// A helicoid `(r cos a, r sin a, 1.2 a)`, `r ∈ [1, 6]`, `a ∈ [0, 2.5]`, from a jittered grid.
+pub(crate) fn helicoid(target_vertices: usize) -> TriMesh {
+    let patch = CylinderPatch { radius: 2.0, span: 2.5, height: 5.0, target_vertices, irregularity: 0.5, seed: 13 };
+    let grid = cylinder_patch(&patch).expect("valid patch");
+    let positions = grid
+        .positions
+        .iter()
+        .map(|p| {
+            let (a, r) = (p.y.atan2(p.x), 1.0 + p.z);
+            Vec3::new(r * a.cos(), r * a.sin(), HELICOID_PITCH * a)
+        })
+        .collect();
+    TriMesh::from_vertices_and_faces(positions, grid.faces).expect("valid helicoid")
+}
+
+/// The helicoid's exact unit normal at `p` (`a = z / pitch`, `r` the distance from the axis):
+/// `∂_r × ∂_a = (c sin a, −c cos a, r)`.
+fn helicoid_normal(p: &Vec3) -> Vec3 {
+    let a = p.z / HELICOID_PITCH;
+    let r = p.x.hypot(p.y);
+    Vec3::new(HELICOID_PITCH * a.sin(), -HELICOID_PITCH * a.cos(), r).normalize()
+}
+
+#[test]
+fn where_every_family_is_nearly_straight_the_search_falls_back_on_the_least_straight() {
+    // Away from its axis a helicoid bends little (principal curvatures ±c/(c² + r²): radius 31 m
+    // at r = 6 m on a 9 m model), so every 60° family is nearly straight over most of it and the
+    // search rejects all of them as degenerate. It continues from the best of those instead of
+    // giving up, says so (the winner keeps its rejection), and the strips are judged as always.
+    let mesh = helicoid(2000);
+    let outcome = search_start(&mesh, FieldParams::pseudo_geodesic(60.0), SearchOptions::default()).expect("the fallback start");
+    assert!(outcome.candidates.iter().all(|c| c.rejected.is_some()), "some candidate was accepted: the fallback is not tested");
+    let winner = &outcome.candidates[outcome.winner];
+    let reason = winner.rejected.as_deref().unwrap_or_default();
+    assert!(reason.starts_with("degenerate") && winner.straight_fraction > 0.5, "{winner:?}");
+    let least_straight = outcome.candidates.iter().filter(|c| c.rejected.as_deref().is_some_and(|r| r.contains("nearly straight"))).map(|c| c.straight_fraction).fold(f64::INFINITY, f64::min);
+    let mut solver = outcome.solver;
+    let report = solver.step(400).expect("solver runs");
+    assert!(report.converged, "not converged after {} iterations", report.iterations);
+    let pattern = strips(&mesh, &solver.field(), 60.0);
+    let mut errors = quad_angle_errors(&pattern, 60.0, helicoid_normal);
+    errors.sort_by(f64::total_cmp);
+    let within = errors.iter().filter(|&&e| e <= 2.0).count() as f64 / errors.len() as f64;
+    let worst = errors.last().copied().unwrap_or(0.0);
+    eprintln!(
+        "winner {} ({:.0} % nearly straight, least {:.0} %); {} quads, {:.1} % within 2° of θ against the exact normal, median {:.2}°, worst {worst:.2}°; verdict: {}",
+        winner.kind.describe(),
+        100.0 * winner.straight_fraction,
+        100.0 * least_straight,
+        errors.len(),
+        100.0 * within,
+        errors[errors.len() / 2],
+        pattern.verdict.message()
+    );
+    // The fallback family is a family of θ where it bends: most strip quads keep θ against the
+    // exact normal (measured: 95 % of 216 within 2°, median 0.04°; the worst, 2.9°, and a
+    // flipped quad lie on one strip's nearly straight stretch near r = 6).
+    assert!(errors.len() > 150 && within >= 0.9 && errors[errors.len() / 2] <= 0.5, "{within} within 2°, median {}", errors[errors.len() / 2]);
+    // Where it does not, the verdict says so: it accepts the strips only if every quad keeps θ.
+    assert!(!pattern.verdict.is_acceptable() || (worst <= 2.5 && pattern.metrics.flipped_quads == 0), "accepted with a quad {worst}° off");
 }

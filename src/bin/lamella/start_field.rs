@@ -129,7 +129,17 @@ fn search(mesh: &TriMesh, theta: f64, verbosity: Verbosity) -> CliResult<Started
             chosen.as_deref().map_or("none acceptable".to_string(), |c| format!("continuing from {c}"))
         ),
     );
-    let description = json!({ "kind": "search", "proxy_vertices": proxy_vertices, "winner": winner, "candidates": candidates });
+    // A winner that is itself rejected is the fallback on nearly straight level curves.
+    let fallback = winner.and_then(|w| search.candidates()[w].rejected.clone());
+    if let (Some(reason), Some(chosen)) = (&fallback, &chosen) {
+        note(
+            verbosity,
+            &format!(
+                "warning: every start leads to nearly straight level curves ({chosen} is the best: {reason}); the surface bends little at this θ across the model, so the curves' binormals are weakly defined and the strips' verdict decides; another θ or a start of your own (--guides, --direction, --strokes, --start-field) may do better"
+            ),
+        );
+    }
+    let description = json!({ "kind": "search", "proxy_vertices": proxy_vertices, "winner": winner, "fallback": fallback.is_some(), "candidates": candidates });
     let solver = search.into_solver().map_err(|e| match e {
         SearchError::NoStart { .. } => CliError::bad_input(format!("{e}; give a start (--guides, --direction, --strokes, --start-field)")),
         SearchError::Field(error) => field_error(error),
