@@ -37,6 +37,9 @@ namespace Lamella.Grasshopper
             pManager.AddNumberParameter("Width", "W", "Strip width in document units, > 0.", GH_ParamAccess.item);
             pManager.AddIntegerParameter("Max Iterations", "I", "The most solver iterations (≥ 1). Default 100.", GH_ParamAccess.item, 100);
             pManager.AddBooleanParameter("Solve", "Sv", "True solves within this solution. Default false.", GH_ParamAccess.item, false);
+            // Appended after Solve, so that documents saved with the first ten inputs keep their wiring.
+            pManager.AddTextParameter("Pass Hours", "PH", "Daily hours H..H whose sun the pass vertices (Mask 1) let through. Empty (the default): the Hours.", GH_ParamAccess.item, "");
+            pManager.AddIntegerParameter("Ring", "Rg", "Width in edge rings of the free transition on each side of a block/pass border, ≥ 0. Default 1.", GH_ParamAccess.item, 1);
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -54,9 +57,9 @@ namespace Lamella.Grasshopper
             if (!DA.GetData(0, ref input) || input == null) return;
             double latitude = 47.4, width = 0.0;
             var north = new Vector3d(0, 1, 0);
-            string dates = "06-01..08-31", hours = "10..16";
+            string dates = "06-01..08-31", hours = "10..16", passHours = null;
             var mask = new List<double>();
-            int count = 10, maxIterations = 100;
+            int count = 10, maxIterations = 100, ring = 1;
             bool solveNow = false;
             DA.GetData(1, ref latitude);
             DA.GetData(2, ref north);
@@ -67,9 +70,16 @@ namespace Lamella.Grasshopper
             if (!DA.GetData(7, ref width)) return;
             DA.GetData(8, ref maxIterations);
             DA.GetData(9, ref solveNow);
+            DA.GetData(10, ref passHours);
+            DA.GetData(11, ref ring);
             if (maxIterations < 1 || count < 1)
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Error, "Strips and Max Iterations must be at least 1");
+                return;
+            }
+            if (ring < 0)
+            {
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Error, string.Format(CultureInfo.InvariantCulture, "Ring is {0}: it must be at least 0", ring));
                 return;
             }
             if (!solveNow)
@@ -78,6 +88,7 @@ namespace Lamella.Grasshopper
                 return;
             }
             ShadingSite site = ShadingSite.Default().WithDates(dates).WithHours(hours);
+            if (!string.IsNullOrWhiteSpace(passHours)) site = site.WithPassHours(passHours);
             site.LatitudeDegrees = latitude;
             site.North = new[] { north.X, north.Y, north.Z };
             CleanMesh clean = CleanMeshInput(input);
@@ -88,7 +99,7 @@ namespace Lamella.Grasshopper
             SunPathSummary summary;
             double[] thetas;
             using (LamellaMesh mesh = LamellaMesh.FromArrays(clean.Xyz, clean.Triangles))
-            using (var shading = new ShadingSolver(mesh, site, labels))
+            using (var shading = new ShadingSolver(mesh, site, labels, ring))
             {
                 report = shading.Report;
                 while (report.Iterations < maxIterations && !report.IsConverged)

@@ -152,6 +152,10 @@ namespace Lamella.Tests
                 new[] { parsed.FirstHour, parsed.LastHour, parsed.PassFirstHour, parsed.PassLastHour });
             Assert.Throws<FormatException>(() => ShadingSite.Default().WithDates("June"));
             Assert.Throws<FormatException>(() => ShadingSite.Default().WithHours("10..noon"));
+            // Pass hours replace only the letting-through hours.
+            ShadingSite pass = parsed.WithPassHours("8..9.5");
+            Assert.AreEqual(new[] { 11.5, 12.5, 8.0, 9.5 }, new[] { pass.FirstHour, pass.LastHour, pass.PassFirstHour, pass.PassLastHour });
+            Assert.Throws<FormatException>(() => parsed.WithPassHours("8-9"));
             // Blocked fractions are coloured over the fixed range [0, 1]: the ramp's ends, clamped, grey for none.
             int[] colours = Conversion.FieldColours.Argb(new[] { 0.0, 1.0, 1.5, double.NaN }, 0.0, 1.0);
             Assert.AreEqual(unchecked((int)0xFF313695), colours[0]);

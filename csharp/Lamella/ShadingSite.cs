@@ -89,13 +89,33 @@ namespace Lamella
         /// <exception cref="FormatException">Not of that form (the text is quoted).</exception>
         public ShadingSite WithHours(string text)
         {
+            double[] hours = Hours(text);
+            return WithHours(hours[0], hours[1]);
+        }
+
+        /// <summary>
+        /// The daily hours whose sun the pass vertices let through, from text <c>H..H</c> (as the CLI's
+        /// <c>--pass-hours</c>); the blocking hours stay. Call after <see cref="WithHours(string)"/>, which sets both.
+        /// </summary>
+        /// <exception cref="FormatException">Not of that form (the text is quoted).</exception>
+        public ShadingSite WithPassHours(string text)
+        {
+            double[] hours = Hours(text);
+            ShadingSite site = this;
+            site.PassFirstHour = hours[0];
+            site.PassLastHour = hours[1];
+            return site;
+        }
+
+        private static double[] Hours(string text)
+        {
             string[] ends = SplitRange(text);
             double first, last;
             var style = System.Globalization.NumberStyles.Float;
             var culture = System.Globalization.CultureInfo.InvariantCulture;
             if (!double.TryParse(ends[0].Trim(), style, culture, out first) || !double.TryParse(ends[1].Trim(), style, culture, out last))
                 throw new FormatException("hours '" + text + "' are not H..H");
-            return WithHours(first, last);
+            return new[] { first, last };
         }
 
         private static string[] SplitRange(string text)
