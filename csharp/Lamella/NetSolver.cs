@@ -139,7 +139,9 @@ namespace Lamella
 
         /// <summary>
         /// The default start of a net (<c>lml_net_start</c>): the first family from the default start search, the second
-        /// among the candidates crossing it at 45° or more on average. Returns the two fields (one value per vertex each).
+        /// among the candidates crossing it at 45° or more on average, and if that pair is not acceptable pairs of heights
+        /// ±30° about each principal axis, each judged by a short net solve (where every pair has a nearly straight family,
+        /// the best of those). Returns the two fields (one value per vertex each).
         /// </summary>
         /// <exception cref="LamellaException">θ or the minimum angle out of range (named), or no candidate leads to a family.</exception>
         public static double[][] DefaultStart(LamellaMesh mesh, double firstThetaDegrees, double secondThetaDegrees, double minIntersectionDegrees = 30.0)

@@ -192,8 +192,13 @@ pub unsafe extern "C" fn lml_net_new(
 }
 
 /// The default start of a net (Rust `net_start`): the first family's winner of the default start
-/// search, then the second family's among the candidates crossing it at 45° or more on average;
-/// each field is where its short solve ended. Families by θ as in `lml_net_new`. Writes `2 n`
+/// search and the second family's among the candidates crossing it at 45° or more on average;
+/// if that pair is not acceptable (a family scores above 3, or the families run within 10° of the
+/// minimum angle over more than 1 % of the area), pairs of heights ±30° about each principal axis
+/// in every orientation; each pair judged by a short net solve, and the fields are where the
+/// winner's ended. Where every pair has a nearly straight family (a surface that bends little at
+/// these angles across the model), the best of those is taken rather than none. Families by θ as
+/// in `lml_net_new`. Writes `2 n`
 /// doubles (the first field, then the second) to `fields` with the two-call pattern: `*needed`
 /// receives `2 n`; with `capacity` below it nothing is computed or copied and
 /// `LML_STATUS_BUFFER_TOO_SMALL` is returned (`fields` may be NULL then). Runs a few dozen short
@@ -201,7 +206,8 @@ pub unsafe extern "C" fn lml_net_new(
 ///
 /// Returns `LML_STATUS_OK`, `LML_STATUS_BUFFER_TOO_SMALL`, `LML_STATUS_INVALID_ARGUMENT` (NULL
 /// mesh or `needed`, θ or the minimum angle out of range, named) or `LML_STATUS_SINGULAR_FIELD`
-/// (no candidate leads to a family; the message gives every candidate's reason).
+/// (no candidate leads to a family, not even a nearly straight one; the message gives every
+/// candidate's reason).
 #[no_mangle]
 pub unsafe extern "C" fn lml_net_start(
     mesh: *const LmlMesh,

@@ -29,7 +29,7 @@ pub use guide_curves::{field_from_guide_curves, GuideCurveOptions, GuideField};
 pub use slope_start::{slope_start_field, slope_tangent};
 pub use start_search::{search_start, Candidate, SearchError, SearchOptions, SearchOutcome, StartKind, StartSearch};
 pub(crate) use proxy::{carried_to, search_proxy};
-pub(crate) use start_search::{family_score, level_curve_measure, principal_plane};
+pub(crate) use start_search::{family_judgement, keep_lower, level_curve_measure, principal_plane, FamilyJudgement};
 pub use stroke_field::{field_from_strokes, StrokeField, StrokeOptions};
 pub use strokes::{project_strokes, StrokeSample};
 pub use target_angle::estimate_target_angle;

@@ -226,14 +226,13 @@ impl StartSearch {
                     candidate.straight_fraction = measure.straight_fraction();
                     candidate.singular_vertices = singular;
                     let singular_fraction = singular as f64 / self.probed_mesh().vertex_count() as f64;
-                    match family_score(&measure, self.params.family, singular_fraction).and_then(|score| self.check_crossing(&probed).map(|()| score)) {
-                        Err(reason) => {
-                            if is_degenerate(&measure, self.params.family) && self.check_crossing(&probed).is_ok() {
-                                keep_lower(&mut self.fallback, index, penalised_score(&measure, singular_fraction), probed);
-                            }
+                    match family_judgement(&measure, self.params.family, singular_fraction).and_then(|judged| self.check_crossing(&probed).map(|()| judged)) {
+                        Err(reason) => candidate.rejected = Some(reason),
+                        Ok(FamilyJudgement { score, degenerate: Some(reason) }) => {
+                            keep_lower(&mut self.fallback, index, score, probed);
                             candidate.rejected = Some(reason);
                         }
-                        Ok(score) => {
+                        Ok(FamilyJudgement { score, degenerate: None }) => {
                             candidate.score = Some(score);
                             keep_lower(&mut self.best, index, score, probed);
                         }
@@ -429,7 +428,7 @@ impl StartSearch {
 
 /// Keeps `(index, score, field)` in `slot` when the slot is empty or holds a higher score (the
 /// earlier candidate wins a tie).
-fn keep_lower(slot: &mut Option<(usize, f64, Vec<f64>)>, index: usize, score: f64, field: Vec<f64>) {
+pub(crate) fn keep_lower<T>(slot: &mut Option<(usize, f64, T)>, index: usize, score: f64, field: T) {
     if slot.as_ref().is_none_or(|(_, kept, _)| score < *kept) {
         *slot = Some((index, score, field));
     }
@@ -446,29 +445,26 @@ pub(crate) fn level_curve_measure(mesh: &TriMesh, field: &[f64], family: Family,
     family_angles(&curves, family, spacing, (high - low).norm()).map_err(|e| format!("level curves not measurable: {e}"))
 }
 
-/// A probed family's score (degrees; lower is better): RMS angle error plus a quarter of the
-/// largest, plus penalties for nearly straight points and for the fraction of singular vertices.
-/// `Err(reason)` rejects it: nothing measured, or a degenerate pseudo-geodesic family (more than
-/// half of its points nearly straight).
-pub(crate) fn family_score(measure: &FamilyAngles, family: Family, singular_fraction: f64) -> Result<f64, String> {
+/// How a probed family is judged: its score (degrees; lower is better): RMS angle error plus a
+/// quarter of the largest, plus penalties for nearly straight points and for the fraction of
+/// singular vertices; and, for a degenerate pseudo-geodesic family (more than half of its points
+/// nearly straight), why it is rejected, though it may still be the fallback of a search that
+/// accepts nothing (see the module notes).
+pub(crate) struct FamilyJudgement {
+    pub score: f64,
+    pub degenerate: Option<String>,
+}
+
+/// The [`FamilyJudgement`] of a family's curve measure. `Err(reason)` when nothing was measured.
+pub(crate) fn family_judgement(measure: &FamilyAngles, family: Family, singular_fraction: f64) -> Result<FamilyJudgement, String> {
     if measure.measured == 0 {
         return Err("no level curve could be measured".into());
     }
-    if is_degenerate(measure, family) {
-        return Err(format!("degenerate: {:.0} % of the level curves are nearly straight, where a pseudo-geodesic has no binormal", 100.0 * measure.straight_fraction()));
-    }
-    Ok(penalised_score(measure, singular_fraction))
-}
-
-/// A pseudo-geodesic family with some curve measured and more than [`MAX_STRAIGHT_FRACTION`] of
-/// its points nearly straight.
-fn is_degenerate(measure: &FamilyAngles, family: Family) -> bool {
-    matches!(family, Family::PseudoGeodesic { .. }) && measure.measured > 0 && measure.straight_fraction() > MAX_STRAIGHT_FRACTION
-}
-
-/// The score of [`family_score`] without its rejections.
-fn penalised_score(measure: &FamilyAngles, singular_fraction: f64) -> f64 {
-    measure.rms_error_degrees + 0.25 * measure.max_error_degrees + STRAIGHT_PENALTY * measure.straight_fraction() + SINGULAR_PENALTY * singular_fraction
+    let straight = measure.straight_fraction();
+    let degenerate = (matches!(family, Family::PseudoGeodesic { .. }) && straight > MAX_STRAIGHT_FRACTION)
+        .then(|| format!("degenerate: {:.0} % of the level curves are nearly straight, where a pseudo-geodesic has no binormal", 100.0 * straight));
+    let score = measure.rms_error_degrees + 0.25 * measure.max_error_degrees + STRAIGHT_PENALTY * straight + SINGULAR_PENALTY * singular_fraction;
+    Ok(FamilyJudgement { score, degenerate })
 }
 
 /// What [`search_start`] found: the solver to continue, every candidate and the winner.

@@ -21,6 +21,10 @@
 //! A pair is acceptable when each family scores at most [`SearchOptions::acceptable_score`] and at
 //! most [`MAX_TANGENT_AREA`] of the area crosses that close. A 3-web is probed as a web: the
 //! scores of its three families, the closest-crossing pair's area.
+//!
+//! As in the single-family search, a pair rejected only because one of its families is nearly
+//! straight over most of the surface stays a fallback: when no pair is accepted, the best of those
+//! (same score) is the winner, its `rejected` saying why, and the strips' verdict judges the net.
 
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -29,7 +33,7 @@ use super::intersection::intersection_angles;
 use super::params::NetParams;
 use super::solver::NetSolver;
 use crate::field::{Family, FieldError, FieldParams, FieldSolver};
-use crate::initialisation::{carried_to, family_score, level_curve_measure, principal_plane, search_proxy, SearchError, SearchOptions, StartSearch};
+use crate::initialisation::{carried_to, family_judgement, keep_lower, level_curve_measure, principal_plane, search_proxy, FamilyJudgement, SearchError, SearchOptions, StartSearch};
 use crate::mesh::TriMesh;
 
 /// Smallest area-weighted mean angle (degrees) at which the second family's start must cross the
@@ -117,12 +121,12 @@ pub fn net_start(mesh: &TriMesh, params: &NetParams, options: &SearchOptions) ->
 
 /// The default start of a net of `params` on `mesh` (see the module notes). Errors:
 /// `SearchError::Field` for invalid parameters, `SearchError::NoStart` with every candidate's
-/// reason when all were rejected.
+/// reason when all were rejected and none only for a nearly straight family (see the module notes).
 pub fn net_start_search(mesh: &TriMesh, params: &NetParams, options: &SearchOptions) -> Result<NetStart, SearchError> {
     params.validate().map_err(SearchError::Field)?;
     let separate = separate_starts(mesh, params, options);
     let proxy = search_proxy(mesh, options.proxy_vertices);
-    let mut search = PairSearch { mesh: proxy.as_ref().unwrap_or(mesh), params, options, candidates: Vec::new(), best: None };
+    let mut search = PairSearch { mesh: proxy.as_ref().unwrap_or(mesh), params, options, candidates: Vec::new(), best: None, fallback: None };
     match separate {
         Ok(fields) => {
             let on_probed = match &proxy {
@@ -138,7 +142,7 @@ pub fn net_start_search(mesh: &TriMesh, params: &NetParams, options: &SearchOpti
     if !search.has_acceptable() {
         search.probe_all(pair_candidates(search.mesh, params))?;
     }
-    let Some((winner, _, probed)) = search.best.take() else {
+    let Some((winner, _, probed)) = search.best.take().or(search.fallback.take()) else {
         let reasons = search.candidates.iter().map(|c| format!("{}: {}", c.kind.describe(), c.rejected.as_deref().unwrap_or("not probed"))).collect();
         return Err(SearchError::NoStart { reasons });
     };
@@ -203,11 +207,13 @@ struct PairSearch<'a> {
     candidates: Vec<NetCandidate>,
     /// Index, score and the given fields the short solve reached.
     best: Option<(usize, f64, Vec<Vec<f64>>)>,
+    /// The same for the best pair rejected only for a nearly straight family.
+    fallback: Option<(usize, f64, Vec<Vec<f64>>)>,
 }
 
-/// Where a candidate's short net solve ended: every family's score, the close-crossing area and
-/// the fields; or why it was rejected.
-type Probed = Result<(Vec<f64>, f64, Vec<Vec<f64>>), String>;
+/// Where a candidate's short net solve ended: every family's score, the close-crossing area, the
+/// fields and, if some family is degenerate (nearly straight), why; or why it was rejected.
+type Probed = Result<(Vec<f64>, f64, Vec<Vec<f64>>, Option<String>), String>;
 
 impl PairSearch<'_> {
     fn reject(&mut self, kind: NetStartKind, reason: String) {
@@ -232,17 +238,17 @@ impl PairSearch<'_> {
     }
 
     fn record(&mut self, kind: NetStartKind, probed: Probed) {
-        let (scores, tangent_area_fraction, fields) = match probed {
+        let (scores, tangent_area_fraction, fields, degenerate) = match probed {
             Ok(probed) => probed,
             Err(reason) => return self.reject(kind, reason),
         };
         let score = scores.iter().sum::<f64>() + TANGENT_PENALTY * tangent_area_fraction;
         let index = self.candidates.len();
         let family_scores = scores.into_iter().map(Some).collect();
-        self.candidates.push(NetCandidate { kind, score: Some(score), family_scores, tangent_area_fraction, rejected: None });
-        if self.best.as_ref().is_none_or(|(_, best, _)| score < *best) {
-            self.best = Some((index, score, fields));
-        }
+        let slot = if degenerate.is_some() { &mut self.fallback } else { &mut self.best };
+        keep_lower(slot, index, score, fields);
+        let score = degenerate.is_none().then_some(score);
+        self.candidates.push(NetCandidate { kind, score, family_scores, tangent_area_fraction, rejected: degenerate });
     }
 
     /// Runs the short net solve from `fields` and measures where it ends. Errors only for invalid
@@ -265,11 +271,15 @@ impl PairSearch<'_> {
         let probed = solver.fields();
         let vertices = self.mesh.vertex_count() as f64;
         let mut scores = Vec::with_capacity(probed.len());
+        let mut degenerate = None;
         for (k, field) in probed.iter().enumerate() {
             let family = self.params.families[k];
             let singular = report.families[k].singular_vertices.len() as f64 / vertices;
-            match level_curve_measure(self.mesh, field, family, self.options).and_then(|measure| family_score(&measure, family, singular)) {
-                Ok(score) => scores.push(score),
+            match level_curve_measure(self.mesh, field, family, self.options).and_then(|measure| family_judgement(&measure, family, singular)) {
+                Ok(FamilyJudgement { score, degenerate: reason }) => {
+                    scores.push(score);
+                    degenerate = degenerate.or(reason.map(|reason| format!("family {}: {reason}", k + 1)));
+                }
                 Err(reason) => return Ok(Err(format!("family {}: {reason}", k + 1))),
             }
         }
@@ -277,7 +287,7 @@ impl PairSearch<'_> {
         let close = pairs.iter().map(|&(a, b)| self.close_crossing_area(&probed[a], &probed[b])).fold(0.0, f64::max);
         // A 3-web is started from its first two fields (the third is −F − H).
         let given = if self.params.is_web() { 2 } else { probed.len() };
-        Ok(Ok((scores, close, probed[..given].to_vec())))
+        Ok(Ok((scores, close, probed[..given].to_vec(), degenerate)))
     }
 
     /// Fraction of the area where the level sets of `f` and `g` cross less than

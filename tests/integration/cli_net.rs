@@ -347,3 +347,25 @@ fn a_net_starts_from_the_fields_given_per_family() {
     std::fs::write(dir.path("short.csv"), "1\n2\n").expect("write");
     assert_bad_input(&dir.0, &["net", "--mesh", mesh, "--families", "A,A", "--start-field", "x.csv", "--start-field", "short.csv", "--out", "o"], &["short.csv", "2 values"]);
 }
+
+#[test]
+fn where_every_start_pair_is_nearly_straight_the_net_goes_on_and_says_so() {
+    // The helicoid of design_default_start at θ = 60°: before, `net` stopped with exit 2 ("no
+    // candidate start"); it now continues from the best pair, warns, marks report.json's start,
+    // and writes the net, whose verdict gives the exit code.
+    let dir = Scratch::new("net-fallback");
+    let mesh = crate::design_default_start::helicoid(1500);
+    mesh.write_obj(std::fs::File::create(dir.path("helicoid.obj")).expect("create")).expect("write");
+    let output = lamella(&dir.0, &["net", "--mesh", "helicoid.obj", "--families", "P60,P60", "--out", "n"]);
+    let err = stderr(&output);
+    assert!(matches!(output.status.code(), Some(0 | 3)), "{err}");
+    assert!(err.contains("warning: every start pair has a nearly straight family"), "{err}");
+    let report = read_json(&dir.path("n/report.json"));
+    let start = &report["start"];
+    assert_eq!(start["fallback"], true, "{start}");
+    let winner = start["winner"].as_u64().expect("a winner") as usize;
+    assert!(start["candidates"][winner]["rejected"].as_str().is_some_and(|r| r.contains("nearly straight")), "{start}");
+    for file in ["net.obj", "nodes.csv", "curves_0.obj", "strips_1.obj"] {
+        assert!(dir.path(&format!("n/{file}")).is_file(), "{file} missing");
+    }
+}

@@ -65,7 +65,7 @@ pub(crate) fn worst_quad_angle_error(pattern: &StripPattern, theta: f64, normal:
 }
 
 /// The angle error of [`worst_quad_angle_error`] of every quad, strip by strip.
-fn quad_angle_errors(pattern: &StripPattern, theta: f64, normal: impl Fn(&Vec3) -> Vec3) -> Vec<f64> {
+pub(crate) fn quad_angle_errors(pattern: &StripPattern, theta: f64, normal: impl Fn(&Vec3) -> Vec3) -> Vec<f64> {
     let mut errors = Vec::new();
     for strip in &pattern.strips {
         for j in 0..strip.centre.len() - 1 {
@@ -234,7 +234,7 @@ pub(crate) fn helicoid(target_vertices: usize) -> TriMesh {
 
 /// The helicoid's exact unit normal at `p` (`a = z / pitch`, `r` the distance from the axis):
 /// `∂_r × ∂_a = (c sin a, −c cos a, r)`.
-fn helicoid_normal(p: &Vec3) -> Vec3 {
+pub(crate) fn helicoid_normal(p: &Vec3) -> Vec3 {
     let a = p.z / HELICOID_PITCH;
     let r = p.x.hypot(p.y);
     Vec3::new(HELICOID_PITCH * a.sin(), -HELICOID_PITCH * a.cos(), r).normalize()

@@ -125,7 +125,14 @@ fn start(args: &NetArgs) -> CliResult<(NetSolver, TriMesh, String, Option<(NetSt
 fn start_line(start: &NetStart, seconds: f64) -> String {
     let on = start.proxy_vertices.map_or(String::new(), |n| format!(" on a {n}-vertex coarsening"));
     let winner = &start.candidates[start.winner];
-    format!("start: {} candidate pairs in {seconds:.1} s{on}; continuing from {}", start.candidates.len(), winner.kind.describe())
+    let line = format!("start: {} candidate pairs in {seconds:.1} s{on}; continuing from {}", start.candidates.len(), winner.kind.describe());
+    match &winner.rejected {
+        // A rejected winner is the fallback on nearly straight families.
+        Some(reason) => format!(
+            "{line}\nwarning: every start pair has a nearly straight family (the best: {reason}); the surface bends little at these angles across the model, so the curves' binormals are weakly defined and the strips' verdict decides; other families or --start-field may do better"
+        ),
+        None => line,
+    }
 }
 
 /// report.json's `start`: every candidate pair with its scores, the winner and the time.
@@ -143,7 +150,8 @@ fn start_json(start: &NetStart, seconds: f64) -> Value {
             })
         })
         .collect();
-    json!({ "candidates": candidates, "winner": start.winner, "proxy_vertices": start.proxy_vertices, "seconds": number(seconds) })
+    let fallback = start.candidates[start.winner].rejected.is_some();
+    json!({ "candidates": candidates, "winner": start.winner, "fallback": fallback, "proxy_vertices": start.proxy_vertices, "seconds": number(seconds) })
 }
 
 pub fn run(args: &NetArgs) -> CliResult<()> {
