@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
+using GH_IO.Serialization;
 using Grasshopper.Kernel;
 using Lamella.Conversion;
 using Lamella.Hosting;
@@ -13,11 +14,14 @@ namespace Lamella.Grasshopper
     /// (paper Sec. 3.3, Fig. 17): the field's values stay fixed, the vertices move within a tolerance of the original
     /// surface. Live like Strip Field (Run: each solution steps within a time budget and outputs the moved surface and
     /// its deviation as they are) or one-shot (Solve); the session is kept across solutions while the mesh, the field's
-    /// values, θ and Tolerance stay.
+    /// values, θ and Tolerance stay, and saved with the document: reopened, it shows the moved surface and continues
+    /// where it stopped.
     /// </summary>
     public class ReshapeSurfaceComponent : LiveComponent
     {
+        private const string SessionsKey = "LamellaReshapeSessions";
         private readonly LiveSessions<SolverSession<ReshapeSolver, ReshapeReport>> sessions = new LiveSessions<SolverSession<ReshapeSolver, ReshapeReport>>();
+        private readonly StoredSessions stored = new StoredSessions();
 
         public ReshapeSurfaceComponent()
             : base("Reshape Surface", "Reshape",
@@ -81,6 +85,7 @@ namespace Lamella.Grasshopper
             }
             var fingerprint = new List<double>(values) { values.Length, thetaDegrees, tolerancePercent };
             string signature = Signature.Of(clean.Xyz, clean.Triangles, fingerprint.ToArray());
+            Restore(DA.Iteration, signature);
             SolverSession<ReshapeSolver, ReshapeReport> session = LiveSession(DA, sessions, signature, run, solveNow, "reshape", () =>
             {
                 using (LamellaMesh mesh = LamellaMesh.FromArrays(clean.Xyz, clean.Triangles))
@@ -100,6 +105,59 @@ namespace Lamella.Grasshopper
                 "{0} iterations{1}; vertex angle error {2:0.###}° RMS, {3:0.###}° max; deviation max {4:0.####}, RMS {5:0.####} (tolerance {6:0.####}); edge lengths change by up to {7:0.#} %",
                 report.Iterations, report.IsConverged ? ", converged" : "", report.AngleErrorRmsDegrees, report.AngleErrorMaxDegrees,
                 report.MaxDeviation, report.RmsDeviation, report.Tolerance, 100 * report.MaxEdgeChange));
+        }
+
+        /// <summary>The session the document saved for this iteration and these inputs, if any, held again (without stepping).</summary>
+        private void Restore(int iteration, string signature)
+        {
+            byte[] saved = stored.Take(iteration, signature);
+            if (saved == null) return;
+            try
+            {
+                sessions.Session(iteration, signature, false, () => SolverSession.Of(ReshapeSolver.Load(saved), signature));
+            }
+            catch (LamellaException)
+            {
+                // A session that does not load (damaged, another version) is started again from the inputs.
+            }
+        }
+
+        protected override void EndSolution()
+        {
+            base.EndSolution();
+            // Saved sessions no iteration took belong to inputs that are gone.
+            stored.EndSolution();
+        }
+
+        /// <summary>Stores every held session whole (see <see cref="SessionArchive"/>).</summary>
+        public override bool Write(GH_IWriter writer)
+        {
+            try
+            {
+                byte[] bytes = stored.Save(sessions, solver => solver.Save());
+                if (bytes != null) writer.SetByteArray(SessionsKey, bytes);
+            }
+            catch (Exception)
+            {
+                // A session that cannot be saved is not stored; the document saves without it and reshapes again.
+            }
+            return base.Write(writer);
+        }
+
+        public override bool Read(GH_IReader reader)
+        {
+            if (reader.ItemExists(SessionsKey))
+            {
+                try
+                {
+                    stored.Load(reader.GetByteArray(SessionsKey));
+                }
+                catch (FormatException)
+                {
+                    // Damaged or from another format version: reshaped again from the inputs.
+                }
+            }
+            return base.Read(reader);
         }
     }
 }

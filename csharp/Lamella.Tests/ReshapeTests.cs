@@ -75,6 +75,53 @@ namespace Lamella.Tests
         }
 
         [Test]
+        public void ADocumentKeepsItsReshapeSessionsWhole()
+        {
+            // What Reshape Surface stores in a Grasshopper document (Hosting.StoredSessions over SessionArchive): every
+            // held session whole, handed back once to the iteration and inputs it was saved for.
+            var cylinder = new Cylinder(16, 10, 11);
+            var sessions = new Hosting.LiveSessions<Hosting.SolverSession<ReshapeSolver, ReshapeReport>>();
+            sessions.BeginSolution();
+            Hosting.SolverSession<ReshapeSolver, ReshapeReport> held;
+            using (var mesh = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            {
+                held = sessions.Session(1, "inputs", false, () => Hosting.SolverSession.Of(new ReshapeSolver(mesh, cylinder.InitialField, 45.0, 0.2, false), "inputs"));
+            }
+            held.Solver.Step(5);
+            byte[] document = new Hosting.StoredSessions().Save(sessions, solver => solver.Save());
+            Assert.IsNotNull(document);
+
+            var reopened = new Hosting.StoredSessions();
+            reopened.Load(document);
+            var none = new Hosting.LiveSessions<Hosting.SolverSession<ReshapeSolver, ReshapeReport>>();
+            CollectionAssert.AreEqual(document, reopened.Save(none, solver => solver.Save()), "saved again before any solution: unchanged");
+            Assert.IsNull(reopened.Take(1, "other inputs"));
+            Assert.IsNull(reopened.Take(0, "inputs"));
+            byte[] bytes = reopened.Take(1, "inputs");
+            Assert.IsNotNull(bytes);
+            Assert.IsNull(reopened.Take(1, "inputs"), "handed out once");
+            using (ReshapeSolver restored = ReshapeSolver.Load(bytes))
+            {
+                Assert.AreEqual(5, restored.Report.Iterations);
+                CollectionAssert.AreEqual(held.Solver.Positions(), restored.Positions());
+                restored.Step(3);
+                held.Solver.Step(3);
+                CollectionAssert.AreEqual(held.Solver.Positions(), restored.Positions(), "continues bit for bit");
+            }
+            reopened.EndSolution();
+            Assert.IsNull(reopened.Save(none, solver => solver.Save()), "nothing kept after a solution took none");
+
+            var truncated = new byte[document.Length - 5];
+            Array.Copy(document, truncated, truncated.Length);
+            Assert.Throws<FormatException>(() => Hosting.SessionArchive.Read(truncated));
+            var field = (byte[])document.Clone();
+            field[3] = (byte)'A';
+            StringAssert.Contains("bad magic", Assert.Throws<FormatException>(() => reopened.Load(field)).Message);
+            Assert.IsNull(reopened.Take(1, "inputs"), "nothing loaded from bad bytes");
+            sessions.Clear();
+        }
+
+        [Test]
         public void InvalidArgumentsAreRefusedByName()
         {
             var cylinder = new Cylinder(8, 6, 3);
