@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using Grasshopper;
+using GH_IO.Serialization;
 using Grasshopper.Kernel;
 using Grasshopper.Kernel.Data;
 using Lamella.Conversion;
@@ -19,10 +20,32 @@ namespace Lamella.Grasshopper
     public abstract class GridshellComponent : LiveComponent
     {
         private readonly LiveSessions<SolverSession<NetSolver, NetReport>> sessions = new LiveSessions<SolverSession<NetSolver, NetReport>>();
+        private readonly DocumentSessions<NetSolver, NetReport> saved;
 
         protected GridshellComponent(string name, string nickname, string description, string iconName)
             : base(name, nickname, description, iconName)
         {
+            saved = new DocumentSessions<NetSolver, NetReport>("LamellaNetSessions", sessions, solver => solver.Save(),
+                (bytes, signature) => SolverSession.Of(NetSolver.Load(bytes), signature));
+        }
+
+        protected override void EndSolution()
+        {
+            base.EndSolution();
+            saved.EndSolution();
+        }
+
+        /// <summary>Stores each held net session whole, so a reopened document continues where it stopped.</summary>
+        public override bool Write(GH_IWriter writer)
+        {
+            saved.Write(writer);
+            return base.Write(writer);
+        }
+
+        public override bool Read(GH_IReader reader)
+        {
+            saved.Read(reader);
+            return base.Read(reader);
         }
 
         protected override ILiveSessions Sessions => sessions;
@@ -135,6 +158,7 @@ namespace Lamella.Grasshopper
             fingerprint.AddRange(inputs.Thetas);
             fingerprint.Add(inputs.MinAngle);
             string signature = Signature.Of(clean.Xyz, clean.Triangles, fingerprint.ToArray());
+            saved.Restore(DA.Iteration, signature);
             return LiveSession(DA, sessions, signature, inputs.Run, inputs.SolveNow, "design the " + design, () =>
             {
                 using (LamellaMesh mesh = LamellaMesh.FromArrays(clean.Xyz, clean.Triangles))

@@ -19,15 +19,16 @@ namespace Lamella.Grasshopper
     /// </summary>
     public class ReshapeSurfaceComponent : LiveComponent
     {
-        private const string SessionsKey = "LamellaReshapeSessions";
         private readonly LiveSessions<SolverSession<ReshapeSolver, ReshapeReport>> sessions = new LiveSessions<SolverSession<ReshapeSolver, ReshapeReport>>();
-        private readonly StoredSessions stored = new StoredSessions();
+        private readonly DocumentSessions<ReshapeSolver, ReshapeReport> saved;
 
         public ReshapeSurfaceComponent()
             : base("Reshape Surface", "Reshape",
                 "Moves the surface a little so that the level curves of a field become P-curves of θ (paper Sec. 3.3): the field's values stay fixed, the vertices move within Tolerance of the original surface (paper Table 3 weights). For a θ the surface has no family of, or to change θ of an existing design. Run reshapes live (the surface moves while it steps), Solve to convergence at once.",
                 "StripField")
         {
+            saved = new DocumentSessions<ReshapeSolver, ReshapeReport>("LamellaReshapeSessions", sessions, solver => solver.Save(),
+                (bytes, signature) => SolverSession.Of(ReshapeSolver.Load(bytes), signature));
         }
 
         public override Guid ComponentGuid => new Guid("3f1d2c9e-6a47-4b1e-9c85-0d7e2b4a6f13");
@@ -85,7 +86,7 @@ namespace Lamella.Grasshopper
             }
             var fingerprint = new List<double>(values) { values.Length, thetaDegrees, tolerancePercent };
             string signature = Signature.Of(clean.Xyz, clean.Triangles, fingerprint.ToArray());
-            Restore(DA.Iteration, signature);
+            saved.Restore(DA.Iteration, signature);
             SolverSession<ReshapeSolver, ReshapeReport> session = LiveSession(DA, sessions, signature, run, solveNow, "reshape", () =>
             {
                 using (LamellaMesh mesh = LamellaMesh.FromArrays(clean.Xyz, clean.Triangles))
@@ -107,56 +108,21 @@ namespace Lamella.Grasshopper
                 report.MaxDeviation, report.RmsDeviation, report.Tolerance, 100 * report.MaxEdgeChange));
         }
 
-        /// <summary>The session the document saved for this iteration and these inputs, if any, held again (without stepping).</summary>
-        private void Restore(int iteration, string signature)
-        {
-            byte[] saved = stored.Take(iteration, signature);
-            if (saved == null) return;
-            try
-            {
-                sessions.Session(iteration, signature, false, () => SolverSession.Of(ReshapeSolver.Load(saved), signature));
-            }
-            catch (LamellaException)
-            {
-                // A session that does not load (damaged, another version) is started again from the inputs.
-            }
-        }
-
         protected override void EndSolution()
         {
             base.EndSolution();
-            // Saved sessions no iteration took belong to inputs that are gone.
-            stored.EndSolution();
+            saved.EndSolution();
         }
 
-        /// <summary>Stores every held session whole (see <see cref="SessionArchive"/>).</summary>
         public override bool Write(GH_IWriter writer)
         {
-            try
-            {
-                byte[] bytes = stored.Save(sessions, solver => solver.Save());
-                if (bytes != null) writer.SetByteArray(SessionsKey, bytes);
-            }
-            catch (Exception)
-            {
-                // A session that cannot be saved is not stored; the document saves without it and reshapes again.
-            }
+            saved.Write(writer);
             return base.Write(writer);
         }
 
         public override bool Read(GH_IReader reader)
         {
-            if (reader.ItemExists(SessionsKey))
-            {
-                try
-                {
-                    stored.Load(reader.GetByteArray(SessionsKey));
-                }
-                catch (FormatException)
-                {
-                    // Damaged or from another format version: reshaped again from the inputs.
-                }
-            }
+            saved.Read(reader);
             return base.Read(reader);
         }
     }
