@@ -4,12 +4,21 @@ using Lamella.Hosting;
 
 namespace Lamella.Grasshopper
 {
+    /// <summary>What a live component keeps in its Grasshopper document beyond its inputs (see <see cref="LiveComponent.DocumentState"/>).</summary>
+    public interface IDocumentState
+    {
+        /// <summary>A solution ended.</summary>
+        void EndSolution();
+        void Write(GH_IWriter writer);
+        void Read(GH_IReader reader);
+    }
+
     /// <summary>
     /// A live component's sessions as its Grasshopper document keeps them: each held session whole (the solver's own
     /// bytes, in a <see cref="SessionArchive"/>), restored without stepping by the first solution whose iteration and
     /// inputs match, so a reopened definition shows the result it was saved with and continues where it stopped.
     /// </summary>
-    internal sealed class DocumentSessions<TSolver, TReport> where TSolver : class, IDisposable
+    public sealed class DocumentSessions<TSolver, TReport> : IDocumentState where TSolver : class, IDisposable
     {
         private readonly string key;
         private readonly LiveSessions<SolverSession<TSolver, TReport>> sessions;

@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.Globalization;
 using Grasshopper;
-using GH_IO.Serialization;
 using Grasshopper.Kernel;
 using Grasshopper.Kernel.Data;
 using Lamella.Conversion;
@@ -29,24 +28,7 @@ namespace Lamella.Grasshopper
                 (bytes, signature) => SolverSession.Of(NetSolver.Load(bytes), signature));
         }
 
-        protected override void EndSolution()
-        {
-            base.EndSolution();
-            saved.EndSolution();
-        }
-
-        /// <summary>Stores each held net session whole, so a reopened document continues where it stopped.</summary>
-        public override bool Write(GH_IWriter writer)
-        {
-            saved.Write(writer);
-            return base.Write(writer);
-        }
-
-        public override bool Read(GH_IReader reader)
-        {
-            saved.Read(reader);
-            return base.Read(reader);
-        }
+        protected override IDocumentState DocumentState => saved;
 
         protected override ILiveSessions Sessions => sessions;
 

@@ -1,5 +1,6 @@
 using System;
 using System.Globalization;
+using GH_IO.Serialization;
 using Grasshopper.Kernel;
 using Lamella.Hosting;
 
@@ -28,6 +29,21 @@ namespace Lamella.Grasshopper
         /// <summary>The component's sessions, one per iteration, kept across solutions.</summary>
         protected abstract ILiveSessions Sessions { get; }
 
+        /// <summary>What the component keeps in its document (its sessions, whole), or null for nothing.</summary>
+        protected virtual IDocumentState DocumentState => null;
+
+        public override bool Write(GH_IWriter writer)
+        {
+            DocumentState?.Write(writer);
+            return base.Write(writer);
+        }
+
+        public override bool Read(GH_IReader reader)
+        {
+            DocumentState?.Read(reader);
+            return base.Read(reader);
+        }
+
         /// <summary>
         /// The description of a Run input: each solution steps <paramref name="what"/> for about the live budget;
         /// <paramref name="shows"/> says what the outputs show meanwhile (empty, or starting with "; ").
@@ -54,6 +70,7 @@ namespace Lamella.Grasshopper
             base.EndSolution();
             // Sessions of iterations this solution did not reach belong to inputs that are gone.
             Sessions.EndSolution();
+            DocumentState?.EndSolution();
             int? delay = stepper.EndSolution();
             if (delay.HasValue) OnPingDocument()?.ScheduleSolution(delay.Value, new GH_Document.GH_ScheduleDelegate(ExpireForNextStep));
         }

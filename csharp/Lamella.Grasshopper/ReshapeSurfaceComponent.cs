@@ -1,7 +1,6 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
-using GH_IO.Serialization;
 using Grasshopper.Kernel;
 using Lamella.Conversion;
 using Lamella.Hosting;
@@ -108,22 +107,6 @@ namespace Lamella.Grasshopper
                 report.MaxDeviation, report.RmsDeviation, report.Tolerance, 100 * report.MaxEdgeChange));
         }
 
-        protected override void EndSolution()
-        {
-            base.EndSolution();
-            saved.EndSolution();
-        }
-
-        public override bool Write(GH_IWriter writer)
-        {
-            saved.Write(writer);
-            return base.Write(writer);
-        }
-
-        public override bool Read(GH_IReader reader)
-        {
-            saved.Read(reader);
-            return base.Read(reader);
-        }
+        protected override IDocumentState DocumentState => saved;
     }
 }

@@ -1,8 +1,6 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
-using System.IO.Compression;
-using System.Text;
 
 namespace Lamella.Hosting
 {
@@ -47,7 +45,7 @@ namespace Lamella.Hosting
     /// </summary>
     public static class FieldArchive
     {
-        private static readonly byte[] Magic = Encoding.ASCII.GetBytes("LMLA");
+        private const string Magic = "LMLA";
         /// <summary>The format version written (2: the parameters carry the slope axis). Version 1 is read too.</summary>
         public const int Version = 2;
         private const int MaxValues = 1 << 28;
@@ -56,80 +54,48 @@ namespace Lamella.Hosting
         public static byte[] Write(IList<SavedField> fields)
         {
             if (fields == null) throw new ArgumentNullException(nameof(fields));
-            using (var output = new MemoryStream())
+            return ArchiveFraming.Write(Magic, Version, writer =>
             {
-                output.Write(Magic, 0, Magic.Length);
-                output.Write(BitConverter.GetBytes(Version), 0, 4);
-                using (var deflate = new DeflateStream(output, CompressionLevel.Optimal, true))
-                using (var writer = new BinaryWriter(deflate, Encoding.UTF8))
+                writer.Write(fields.Count);
+                foreach (SavedField field in fields)
                 {
-                    writer.Write(fields.Count);
-                    foreach (SavedField field in fields)
-                    {
-                        if (field == null) throw new ArgumentException("a saved field is null", nameof(fields));
-                        writer.Write(field.Iteration);
-                        writer.Write(field.Signature);
-                        writer.Write(field.ThetaDegrees);
-                        WriteParams(writer, field.Parameters);
-                        WriteReport(writer, field.Report);
-                        writer.Write(field.Values.Length);
-                        writer.Write(Shuffle(field.Values));
-                    }
+                    if (field == null) throw new ArgumentException("a saved field is null", nameof(fields));
+                    writer.Write(field.Iteration);
+                    writer.Write(field.Signature);
+                    writer.Write(field.ThetaDegrees);
+                    WriteParams(writer, field.Parameters);
+                    WriteReport(writer, field.Report);
+                    writer.Write(field.Values.Length);
+                    writer.Write(Shuffle(field.Values));
                 }
-                return output.ToArray();
-            }
+            });
         }
 
         /// <summary>
         /// Reads fields written by <see cref="Write"/>. Bytes of another kind, another version, truncated or damaged
         /// throw <see cref="FormatException"/> saying which.
         /// </summary>
-        public static List<SavedField> Read(byte[] bytes)
+        public static List<SavedField> Read(byte[] bytes) => ArchiveFraming.Read(bytes, Magic, 1, Version, "saved Lamella fields", (reader, version) =>
         {
-            if (bytes == null) throw new ArgumentNullException(nameof(bytes));
-            if (bytes.Length < 8 || Encoding.ASCII.GetString(bytes, 0, 4) != "LMLA") throw new FormatException("not saved Lamella fields (bad magic number)");
-            int version = BitConverter.ToInt32(bytes, 4);
-            if (version != 1 && version != Version) throw new FormatException("saved Lamella fields of format version " + version + "; this plugin reads versions 1 to " + Version);
-            try
+            int count = reader.ReadInt32();
+            if (count < 0 || count > 1 << 20) throw new FormatException("the saved fields claim " + count + " entries");
+            var fields = new List<SavedField>(Math.Min(count, 1024));
+            for (int i = 0; i < count; i++)
             {
-                using (var input = new MemoryStream(bytes, 8, bytes.Length - 8))
-                using (var deflate = new DeflateStream(input, CompressionMode.Decompress))
-                using (var reader = new BinaryReader(deflate, Encoding.UTF8))
-                {
-                    int count = reader.ReadInt32();
-                    if (count < 0 || count > 1 << 20) throw new FormatException("the saved fields claim " + count + " entries");
-                    var fields = new List<SavedField>(Math.Min(count, 1024));
-                    for (int i = 0; i < count; i++)
-                    {
-                        int iteration = reader.ReadInt32();
-                        string signature = reader.ReadString();
-                        double theta = reader.ReadDouble();
-                        FieldParams parameters = ReadParams(reader, version);
-                        FieldReport report = ReadReport(reader);
-                        int n = reader.ReadInt32();
-                        if (n < 0 || n > MaxValues) throw new FormatException("saved field " + i + " claims " + n + " values");
-                        byte[] planes = reader.ReadBytes(8 * n);
-                        if (planes.Length != 8 * n) throw new FormatException("saved field " + i + " is truncated");
-                        if (iteration < 0) throw new FormatException("saved field " + i + " has iteration " + iteration);
-                        fields.Add(new SavedField(iteration, signature, theta, parameters, report, Unshuffle(planes, n)));
-                    }
-                    return fields;
-                }
+                int iteration = reader.ReadInt32();
+                string signature = reader.ReadString();
+                double theta = reader.ReadDouble();
+                FieldParams parameters = ReadParams(reader, version);
+                FieldReport report = ReadReport(reader);
+                int n = reader.ReadInt32();
+                if (n < 0 || n > MaxValues) throw new FormatException("saved field " + i + " claims " + n + " values");
+                byte[] planes = reader.ReadBytes(8 * n);
+                if (planes.Length != 8 * n) throw new FormatException("saved field " + i + " is truncated");
+                if (iteration < 0) throw new FormatException("saved field " + i + " has iteration " + iteration);
+                fields.Add(new SavedField(iteration, signature, theta, parameters, report, Unshuffle(planes, n)));
             }
-            catch (EndOfStreamException)
-            {
-                throw new FormatException("the saved Lamella fields are truncated");
-            }
-            catch (InvalidDataException e)
-            {
-                throw new FormatException("the saved Lamella fields are damaged (" + e.Message + ")");
-            }
-            catch (IOException e)
-            {
-                // Mono reports bad Deflate data as an IOException (.NET as InvalidDataException).
-                throw new FormatException("the saved Lamella fields are damaged (" + e.Message + ")");
-            }
-        }
+            return fields;
+        });
 
         private static byte[] Shuffle(double[] values)
         {

@@ -1,8 +1,5 @@
 using System;
 using System.Collections.Generic;
-using System.IO;
-using System.IO.Compression;
-using System.Text;
 
 namespace Lamella.Hosting
 {
@@ -32,7 +29,7 @@ namespace Lamella.Hosting
     /// </summary>
     public static class SessionArchive
     {
-        private static readonly byte[] Magic = Encoding.ASCII.GetBytes("LMLS");
+        private const string Magic = "LMLS";
         /// <summary>The format version written and read.</summary>
         public const int Version = 1;
         private const int MaxSessions = 1 << 20;
@@ -42,74 +39,42 @@ namespace Lamella.Hosting
         public static byte[] Write(IList<SavedSession> sessions)
         {
             if (sessions == null) throw new ArgumentNullException(nameof(sessions));
-            using (var output = new MemoryStream())
+            return ArchiveFraming.Write(Magic, Version, writer =>
             {
-                output.Write(Magic, 0, Magic.Length);
-                output.Write(BitConverter.GetBytes(Version), 0, 4);
-                using (var deflate = new DeflateStream(output, CompressionLevel.Optimal, true))
-                using (var writer = new BinaryWriter(deflate, Encoding.UTF8))
+                writer.Write(sessions.Count);
+                foreach (SavedSession session in sessions)
                 {
-                    writer.Write(sessions.Count);
-                    foreach (SavedSession session in sessions)
-                    {
-                        if (session == null) throw new ArgumentException("a saved session is null", nameof(sessions));
-                        writer.Write(session.Iteration);
-                        writer.Write(session.Signature);
-                        writer.Write(session.Bytes.Length);
-                        writer.Write(session.Bytes);
-                    }
+                    if (session == null) throw new ArgumentException("a saved session is null", nameof(sessions));
+                    writer.Write(session.Iteration);
+                    writer.Write(session.Signature);
+                    writer.Write(session.Bytes.Length);
+                    writer.Write(session.Bytes);
                 }
-                return output.ToArray();
-            }
+            });
         }
 
         /// <summary>
         /// Reads sessions written by <see cref="Write"/>. Bytes of another kind, another version, truncated or damaged
         /// throw <see cref="FormatException"/> saying which. The sessions' own bytes are checked when they are loaded.
         /// </summary>
-        public static List<SavedSession> Read(byte[] bytes)
+        public static List<SavedSession> Read(byte[] bytes) => ArchiveFraming.Read(bytes, Magic, Version, Version, "saved Lamella sessions", (reader, version) =>
         {
-            if (bytes == null) throw new ArgumentNullException(nameof(bytes));
-            if (bytes.Length < 8 || Encoding.ASCII.GetString(bytes, 0, 4) != "LMLS") throw new FormatException("not saved Lamella sessions (bad magic number)");
-            int version = BitConverter.ToInt32(bytes, 4);
-            if (version != Version) throw new FormatException("saved Lamella sessions of format version " + version + "; this plugin reads version " + Version);
-            try
+            int count = reader.ReadInt32();
+            if (count < 0 || count > MaxSessions) throw new FormatException("the saved sessions claim " + count + " entries");
+            var sessions = new List<SavedSession>(Math.Min(count, 1024));
+            for (int i = 0; i < count; i++)
             {
-                using (var input = new MemoryStream(bytes, 8, bytes.Length - 8))
-                using (var deflate = new DeflateStream(input, CompressionMode.Decompress))
-                using (var reader = new BinaryReader(deflate, Encoding.UTF8))
-                {
-                    int count = reader.ReadInt32();
-                    if (count < 0 || count > MaxSessions) throw new FormatException("the saved sessions claim " + count + " entries");
-                    var sessions = new List<SavedSession>(Math.Min(count, 1024));
-                    for (int i = 0; i < count; i++)
-                    {
-                        int iteration = reader.ReadInt32();
-                        string signature = reader.ReadString();
-                        int length = reader.ReadInt32();
-                        if (length < 0 || length > MaxSessionBytes) throw new FormatException("saved session " + i + " claims " + length + " bytes");
-                        byte[] session = reader.ReadBytes(length);
-                        if (session.Length != length) throw new FormatException("saved session " + i + " is truncated");
-                        if (iteration < 0) throw new FormatException("saved session " + i + " has iteration " + iteration);
-                        sessions.Add(new SavedSession(iteration, signature, session));
-                    }
-                    return sessions;
-                }
+                int iteration = reader.ReadInt32();
+                string signature = reader.ReadString();
+                int length = reader.ReadInt32();
+                if (length < 0 || length > MaxSessionBytes) throw new FormatException("saved session " + i + " claims " + length + " bytes");
+                byte[] session = reader.ReadBytes(length);
+                if (session.Length != length) throw new FormatException("saved session " + i + " is truncated");
+                if (iteration < 0) throw new FormatException("saved session " + i + " has iteration " + iteration);
+                sessions.Add(new SavedSession(iteration, signature, session));
             }
-            catch (EndOfStreamException)
-            {
-                throw new FormatException("the saved Lamella sessions are truncated");
-            }
-            catch (InvalidDataException e)
-            {
-                throw new FormatException("the saved Lamella sessions are damaged (" + e.Message + ")");
-            }
-            catch (IOException e)
-            {
-                // Mono reports bad Deflate data as an IOException (.NET as InvalidDataException).
-                throw new FormatException("the saved Lamella sessions are damaged (" + e.Message + ")");
-            }
-        }
+            return sessions;
+        });
     }
 
     /// <summary>
