@@ -423,14 +423,13 @@ impl StartSearch {
     fn measure(&self, field: &[f64]) -> Result<FamilyAngles, String> {
         level_curve_measure(self.probed_mesh(), field, self.params.family, &self.options)
     }
-
 }
 
-/// Keeps `(index, score, field)` in `slot` when the slot is empty or holds a higher score (the
-/// earlier candidate wins a tie).
-pub(crate) fn keep_lower<T>(slot: &mut Option<(usize, f64, T)>, index: usize, score: f64, field: T) {
+/// Keeps candidate `index` with its `score` and probed fields in `slot` when the slot is empty or
+/// holds a higher score (the earlier candidate wins a tie).
+pub(crate) fn keep_lower<T>(slot: &mut Option<(usize, f64, T)>, index: usize, score: f64, fields: T) {
     if slot.as_ref().is_none_or(|(_, kept, _)| score < *kept) {
-        *slot = Some((index, score, field));
+        *slot = Some((index, score, fields));
     }
 }
 
