@@ -20,13 +20,25 @@ namespace Lamella.Grasshopper
     public abstract class BaseMeshComponent : LiveComponent
     {
         private readonly LiveSessions<SolverSession<BaseMeshRun, BaseMeshReport>> sessions = new LiveSessions<SolverSession<BaseMeshRun, BaseMeshReport>>();
+        private readonly DocumentSessions<BaseMeshRun, BaseMeshReport> saved;
 
         protected BaseMeshComponent(string name, string nickname, string description, string iconName)
             : base(name, nickname, description, iconName)
         {
+            saved = new DocumentSessions<BaseMeshRun, BaseMeshReport>("LamellaBaseMeshSessions", sessions, run => run.Solver.Save(),
+                (bytes, signature) => SolverSession.Of(new BaseMeshRun(BaseMeshSolver.Load(bytes), false), signature));
         }
 
         protected override ILiveSessions Sessions => sessions;
+
+        /// <summary>
+        /// Whether the sessions are kept in the document (whole, see <see cref="DocumentSessions{TSolver, TReport}"/>). Not
+        /// for a component that shows the net as given beside the optimised one: those nodes are read before the first
+        /// step and are not part of a session.
+        /// </summary>
+        protected virtual bool SessionsInDocument => true;
+
+        protected override IDocumentState DocumentState => SessionsInDocument ? saved : null;
 
         /// <summary>The end of the descriptions of the outputs built only once the optimisation has converged or stopped.</summary>
         protected const string BuiltOnceStopped = " Empty while Run steps: built once the optimisation converges or stops.";
@@ -113,6 +125,7 @@ namespace Lamella.Grasshopper
                 }
             }
             string signature = Signature.Of(clean.Xyz, clean.Triangles, fingerprint.ToArray());
+            if (SessionsInDocument) saved.Restore(DA.Iteration, signature);
             return LiveSession(DA, sessions, signature, inputs.Run, inputs.SolveNow, "optimise the " + design, () =>
             {
                 using (LamellaMesh reference = LamellaMesh.FromArrays(clean.Xyz, clean.Triangles))

@@ -34,6 +34,9 @@ namespace Lamella.Grasshopper
         /// <summary>The index of Max Iterations: after the Torsion-free input where there is one.</summary>
         private int MaxIterationsInput => alwaysTorsionFree ? 4 : 5;
 
+        /// <summary>Torsion-Free Net shows each node's ruling angle on the net as given, which a saved session does not hold.</summary>
+        protected override bool SessionsInDocument => !alwaysTorsionFree;
+
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
             pManager.AddMeshParameter("Reference", "M", "The surface the net should stay on (the mesh Strip Net was given, cleaned the same way).", GH_ParamAccess.item);
