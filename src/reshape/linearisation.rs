@@ -69,6 +69,11 @@ pub(crate) struct Linearisation {
     /// Surface normal per vertex: the normal of its local quadric, the normal the outside
     /// measure ([`crate::quality`]) judges the curves against.
     pub normals: Vec<Vec3>,
+    /// Per curve vertex: its smooth normal minus the unit vector area of its one-ring
+    /// ([`ring_area_vector`], normalised). The angle rows use that unit vector at the moving
+    /// positions plus this offset: the smooth normal at the positions of this iteration, changing
+    /// to first order as the ring normal does.
+    pub normal_offsets: Vec<Vec3>,
     pub chords: Vec<ChordLengths>,
     pub anchors: Vec<Anchor>,
 }
@@ -90,6 +95,22 @@ impl Linearisation {
             })
             .collect();
         let anchors = original.anchors(positions);
-        Linearisation { hessian: HessianEnergy::new(&mesh), normals: mesh.smooth_normals().to_vec(), chords, anchors, mesh }
+        let normals = mesh.smooth_normals().to_vec();
+        let normal_offsets = curves
+            .iter()
+            .map(|c| {
+                let v0 = c.vertex as usize;
+                let ring = mesh.star(v0).neighbours.iter().map(|&w| positions[w as usize]);
+                normals[v0] - ring_area_vector(ring).try_normalize(0.0).unwrap_or_else(Vec3::zeros)
+            })
+            .collect();
+        Linearisation { hessian: HessianEnergy::new(&mesh), normals, normal_offsets, chords, anchors, mesh }
     }
+}
+
+/// The vector area `m = ½ Σ_k x_k × x_{k+1}` of a closed one-ring polygon (its neighbours in
+/// counter-clockwise order); `m / ‖m‖` is the ring normal, independent of the centre vertex.
+pub(crate) fn ring_area_vector(ring: impl Iterator<Item = Vec3> + Clone) -> Vec3 {
+    let next = ring.clone().cycle().skip(1);
+    ring.zip(next).fold(Vec3::zeros(), |m, (a, b)| m + a.cross(&b)) * 0.5
 }

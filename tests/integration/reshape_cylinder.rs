@@ -28,10 +28,15 @@ fn sixty_degree_cylinder() -> &'static (TriMesh, Vec<f64>) {
 
 /// The outside measure of ten level curves of `field` on `mesh` against θ.
 fn outside_measure(mesh: &TriMesh, field: &[f64], theta: f64) -> FamilyAngles {
+    outside_measure_at(mesh, field, theta, DEFAULT_SPACING_EDGES)
+}
+
+/// [`outside_measure`] with the curves resampled every `edges` mean edge lengths.
+fn outside_measure_at(mesh: &TriMesh, field: &[f64], theta: f64, edges: f64) -> FamilyAngles {
     let levels = uniform_levels(mesh, field, 10).expect("valid field");
     let curves = extract_level_curves(mesh, field, &levels).expect("levels in range");
     let (low, high) = mesh.bounding_box();
-    let spacing = DEFAULT_SPACING_EDGES * mesh.mean_edge_length();
+    let spacing = edges * mesh.mean_edge_length();
     family_angles(&curves, Family::PseudoGeodesic { theta_degrees: theta }, spacing, (high - low).norm()).expect("valid curves")
 }
 
@@ -65,8 +70,9 @@ pub(crate) fn brute_force_distances(points: &[Vec3], mesh: &TriMesh) -> Vec<f64>
 }
 
 /// The settings of the cylinder runs: Table 3's λ_angle and λ_close, with λ_fair 0.05 and λ_edge
-/// 0.05 (with Table 3's 0.02 and 2e-3 the same run ends at 4.5° RMS from outside, 23° at worst
-/// near the boundary, its edges stretched by 43 %), and a tolerance of 5 % of the diagonal.
+/// 0.05, and a tolerance of 5 % of the diagonal. With Table 3's 0.02 and 2e-3 the curves meet θ
+/// as well (0.31° RMS from outside) but the edges stretch by 53 % and the curves flatten (28 % of
+/// the resampled points straight at the model's scale).
 fn cylinder_params() -> ReshapeParams {
     let mut params = ReshapeParams::new(45.0);
     params.weights = ReshapeWeights { fair: 0.05, edge: 0.05, ..ReshapeWeights::default() };
@@ -97,15 +103,26 @@ fn sixty_degree_family_moves_towards_forty_five_degrees() {
         100.0 * report.max_deviation / report.tolerance * 0.05,
         100.0 * report.max_edge_change
     );
-    // Measured: 2.3° RMS from outside (per curve 0.3–3.7°), 7.6° at worst. The paper's target,
-    // 45° within 1°, is NOT reached: the optimiser's own rows are met to 1.8° RMS at the
-    // vertices, and the curves at the scale of three edges stay further off.
-    assert!(after.rms_error_degrees < 3.0, "outside RMS {}°", after.rms_error_degrees);
-    // The curves stay curves: a straight family would satisfy no P-curve angle (14 of the ~120
-    // resampled points are straight at the model's scale).
-    assert!(after.straight_fraction() < 0.15, "straight fraction {}", after.straight_fraction());
+    // The paper's target: the curves meet 45° within 1° (measured 0.36° RMS, 1.5° at worst, the
+    // worst on the short curve in a corner). Before the normal of the angle rows followed the
+    // moving ring and the chords reached three edges: 2.3° RMS, 7.6° at worst.
+    assert!(after.rms_error_degrees < 1.0 && after.max_error_degrees < 2.0, "outside {:.2}° RMS, {:.2}° max", after.rms_error_degrees, after.max_error_degrees);
+    // Every curve with measured points meets it on its own (measured ≤ 1.1° RMS per curve).
+    for (i, curve) in after.curves.iter().enumerate().filter(|(_, c)| c.measured > 0) {
+        assert!(curve.rms_error_degrees < 1.5, "curve {i}: {:.2}° RMS", curve.rms_error_degrees);
+    }
+    // Not only at the scale the optimiser's chords span: resampled every two edges the curves
+    // still meet θ (measured 0.74° RMS; the original 60° field there: 0.37°).
+    let finer = outside_measure_at(&moved, field, 45.0, 2.0);
+    assert!(finer.rms_error_degrees < 1.0, "every two edges: {:.2}° RMS", finer.rms_error_degrees);
+    // The curves stay curves: a straight family would satisfy no P-curve angle. Straight at the
+    // model's scale are at most two resampled points per curve (measured: the first and last
+    // inner points, by the boundary, where no vertex has angle rows; 14 of 94 in all).
+    for (i, curve) in after.curves.iter().enumerate() {
+        assert!(curve.straight <= 2, "curve {i}: {} of {} points straight", curve.straight, curve.straight + curve.measured);
+    }
     assert!(report.max_deviation <= report.tolerance, "deviation {} over the tolerance {}", report.max_deviation, report.tolerance);
-    // Measured 19.3 %.
+    // Measured 20.8 %: a fixed field's curves reach 45° on this cylinder only by stretching.
     assert!(report.max_edge_change <= 0.25, "edge lengths change by {} %", 100.0 * report.max_edge_change);
 }
 
@@ -191,7 +208,7 @@ fn alternating_schedule_keeps_the_tolerance() {
     assert!(deviation <= 0.01 * (high - low).norm() + 1e-12, "deviation {deviation}");
     assert!((result.reshape_report.max_deviation - deviation).abs() <= 1e-9 * deviation.max(1.0));
     // The field steps are free to reach 45° on the cylinder (the family exists there). Measured:
-    // 0.49° RMS, 1.4° at worst; the straight points are those of the short corner curves.
+    // 0.25° RMS, 0.72° at worst; the straight points are those of the short corner curves.
     assert!(after.rms_error_degrees < 1.0 && after.max_error_degrees < 2.0, "{after:?}");
     assert!(after.measured > 50 && after.straight_fraction() < 0.25, "measured {}, straight {}", after.measured, after.straight);
 }
