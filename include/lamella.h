@@ -215,6 +215,11 @@ typedef int32_t LmlStatus;
 #endif // __STDC_VERSION__ >= 202311L
 #endif // __cplusplus
 
+// An alternating field and surface optimisation (opaque): the original surface, the moved one,
+// the field and the parameters of both kinds of step. Create it with `lml_alternation_new`,
+// release it with `lml_alternation_free`.
+typedef struct LmlAlternation LmlAlternation;
+
 // A base-mesh optimisation session (opaque): a copy of the reference surface, the net with its
 // auxiliary variables (normals, binormals, rulings) and the solver state. Create it with
 // `lml_base_mesh_new`, `lml_base_mesh_new_slopes` or `lml_base_mesh_from_strip_net` (a net of
@@ -794,6 +799,22 @@ typedef struct LmlReshapeReport {
   double energy_close;
   double energy_edge;
 } LmlReshapeReport;
+
+// The state of an alternation after `lml_alternation_step` (written by the library; the caller
+// owns the struct).
+typedef struct LmlAlternationReport {
+  // Rounds (a field step and a surface step each) run since the session was created.
+  uint64_t rounds;
+  // Rounds run by the last call.
+  uint64_t rounds_this_step;
+  // 1 when both steps of the last round converged (further steps do nothing), else 0.
+  uint64_t converged;
+  // The last field step (its iterations counted from the start of that step; all zero before
+  // the first round).
+  struct LmlReport field;
+  // The last surface step: deviations from the original surface, in the mesh's units.
+  struct LmlReshapeReport surface;
+} LmlAlternationReport;
 
 // The state of a base-mesh optimisation (written by the library; the caller owns the struct),
 // measured from outside: each family's angle at the net's own vertices against the reference's
@@ -2420,6 +2441,70 @@ LmlStatus lml_reshape_deviations(const struct LmlReshape *reshape,
                                  double *values,
                                  size_t capacity,
                                  size_t *needed);
+
+// Starts field and surface steps in turn on `mesh` from `field`, towards P-curves of the angle
+// θ, with the default field parameters (`lml_field_params_default`'s) and the paper's Table 3
+// surface weights (Fig. 17(b)).
+//
+// - `mesh`: the original surface (copied).
+// - `field`: `n` doubles, one per vertex (finite, not constant, magnitude at most 1e100). Copied.
+// - `theta_degrees`: the target angle, in [0°, 180°] (the field steps' family is that of θ:
+//   asymptotic at 0° and 180°, geodesic at 90°).
+// - `tolerance`, `tolerance_is_fraction`: the bound on every vertex's distance from the
+//   original surface, as in `lml_reshape_new`; it holds through every round.
+// - `iterations_per_step`: most iterations of each field step and of each surface step, ≥ 1.
+// - `out`: receives the new session (release with `lml_alternation_free`); NULL on failure.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (NULL pointer, `n` ≠ vertex count, a
+// value out of range, naming it); `LML_STATUS_SINGULAR_FIELD` (a constant field, or no interior
+// vertex with a regular level curve).
+LmlStatus lml_alternation_new(const struct LmlMesh *mesh,
+                              const double *field,
+                              size_t n,
+                              double theta_degrees,
+                              double tolerance,
+                              uint32_t tolerance_is_fraction,
+                              uint32_t iterations_per_step,
+                              struct LmlAlternation **out);
+
+// Releases a session. NULL is accepted and ignored. The handle must not be used again.
+void lml_alternation_free(struct LmlAlternation *alternation);
+
+// Runs at most `max_rounds` rounds (fewer once a round converges) and writes the state to
+// `*report` (may be NULL).
+//
+// Returns `LML_STATUS_MORE` (step again), `LML_STATUS_CONVERGED`, `LML_STATUS_INVALID_ARGUMENT`
+// (NULL or misaligned pointer) or `LML_STATUS_DID_NOT_CONVERGE` (a step failed numerically; the
+// session keeps the state of its last whole round).
+LmlStatus lml_alternation_step(struct LmlAlternation *alternation,
+                               uint32_t max_rounds,
+                               struct LmlAlternationReport *report);
+
+// Writes the state after the last step (or after creation) to `*report`.
+// Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_alternation_report(const struct LmlAlternation *alternation,
+                                 struct LmlAlternationReport *report);
+
+// Copies the current vertex positions (xyz per vertex, `3 n` doubles, in the mesh's units) into
+// `xyz` with the two-call pattern of `lml_reshape_positions`.
+LmlStatus lml_alternation_positions(const struct LmlAlternation *alternation,
+                                    double *xyz,
+                                    size_t capacity,
+                                    size_t *needed);
+
+// Copies the current field (`n` doubles, one per vertex) into `values` with the two-call
+// pattern of `lml_reshape_positions`.
+LmlStatus lml_alternation_field(const struct LmlAlternation *alternation,
+                                double *values,
+                                size_t capacity,
+                                size_t *needed);
+
+// Copies the distance of every vertex from the original surface (`n` doubles, the mesh's
+// units) into `values` with the two-call pattern of `lml_reshape_positions`.
+LmlStatus lml_alternation_deviations(const struct LmlAlternation *alternation,
+                                     double *values,
+                                     size_t capacity,
+                                     size_t *needed);
 
 // Starts optimising a net of rows and columns (paper Sec. 3.5) so that each family of polylines
 // becomes the asked curves (pseudo-geodesic, geodesic or asymptotic) on or near `reference`,

@@ -42,6 +42,7 @@ namespace Lamella.Tests
             { "LmlFabricationSummary", typeof(FabricationSummary) },
             { "LmlNetReport", typeof(NetReportRecord) },
             { "LmlReshapeReport", typeof(ReshapeReportRecord) },
+            { "LmlAlternationReport", typeof(AlternationReportRecord) },
             { "LmlBaseMeshReport", typeof(BaseMeshReportRecord) },
             { "LmlBaseMeshNode", typeof(BaseMeshNodeRecord) },
             { "LmlBaseMeshFamilyReport", typeof(BaseMeshFamilyReportRecord) },

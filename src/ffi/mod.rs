@@ -64,10 +64,12 @@ mod web;
 mod strip_web;
 mod view;
 mod reshape;
+mod alternation;
 mod base_mesh;
 mod surfaces;
 mod shading;
 
+pub use alternation::*;
 pub use base_mesh::*;
 pub use boundary_starts::*;
 pub use curves::*;

@@ -4,6 +4,7 @@
 
 use super::failure::Failure;
 use super::guard::guarded;
+use super::layout::flat_xyz;
 use super::mesh::LmlMesh;
 use super::raw::{copy_out, handle, handle_mut, input, release, Out};
 use super::status::LmlStatus;
@@ -72,6 +73,17 @@ impl From<ReshapeError> for Failure {
             ReshapeError::InvalidParameter { .. } => Failure::new(LmlStatus::InvalidArgument, e.to_string()),
             ReshapeError::NoCurveVertices => Failure::new(LmlStatus::SingularField, e.to_string()),
         }
+    }
+}
+
+/// What a failed surface step answers: `LML_STATUS_DID_NOT_CONVERGE` for an iteration that
+/// failed numerically, else the error's own status.
+pub(super) fn step_failure(e: ReshapeError) -> Failure {
+    match e {
+        ReshapeError::Solver(error @ (SolverError::NonFiniteResidual { .. } | SolverError::NonFiniteJacobian { .. } | SolverError::FactorizationFailed { .. })) => {
+            Failure::new(LmlStatus::DidNotConverge, format!("reshape: {error}"))
+        }
+        other => Failure::from(other),
     }
 }
 
@@ -177,12 +189,7 @@ pub unsafe extern "C" fn lml_reshape_step(reshape: *mut LmlReshape, max_iteratio
         // SAFETY (both blocks): live handle used by this thread only; `report` NULL or writable.
         let reshape = unsafe { handle_mut(reshape, "reshape") }?;
         let report = unsafe { Out::optional(report, "report") }?;
-        let step = reshape.solver.step(usize::try_from(max_iterations).unwrap_or(usize::MAX)).map_err(|e| match e {
-            ReshapeError::Solver(error @ (SolverError::NonFiniteResidual { .. } | SolverError::NonFiniteJacobian { .. } | SolverError::FactorizationFailed { .. })) => {
-                Failure::new(LmlStatus::DidNotConverge, format!("reshape: {error}"))
-            }
-            other => Failure::from(other),
-        })?;
+        let step = reshape.solver.step(usize::try_from(max_iterations).unwrap_or(usize::MAX)).map_err(step_failure)?;
         if let Some(mut report) = report {
             report.set(LmlReshapeReport::from(&step));
         }
@@ -212,12 +219,7 @@ pub unsafe extern "C" fn lml_reshape_positions(reshape: *const LmlReshape, xyz: 
     guarded(|| {
         // SAFETY (both blocks): live handle; `xyz` writable for `capacity` doubles; `needed` writable.
         let reshape = unsafe { handle(reshape, "reshape") }?;
-        let positions = reshape.solver.positions();
-        let mut flat = Vec::with_capacity(3 * positions.len());
-        for p in &positions {
-            flat.extend_from_slice(p.as_slice());
-        }
-        unsafe { copy_out(&flat, xyz, capacity, needed, "xyz") }
+        unsafe { copy_out(&flat_xyz(&reshape.solver.positions()), xyz, capacity, needed, "xyz") }
     })
 }
 

@@ -2,7 +2,7 @@
 //! exists on a surface, move the surface a little. With the field F fixed at the vertices, the
 //! vertex positions, binormals and side vectors are optimised so that the level sets become
 //! P-curves of the angle θ ([`ReshapeSolver`], Fig. 17), within a bound on the deviation from the
-//! original surface ([`Tolerance`]); [`alternate`] runs field and surface steps in turn.
+//! original surface ([`Tolerance`]); an [`AlternatingSolver`] runs field and surface steps in turn.
 
 mod alternating;
 mod curve_star;
@@ -14,7 +14,7 @@ mod report;
 mod session;
 mod solver;
 
-pub use alternating::{alternate, AlternatingParams, Alternated};
+pub use alternating::{AlternatingParams, AlternatingReport, AlternatingSolver};
 pub use error::ReshapeError;
 pub use params::{ReshapeParams, ReshapeWeights, Tolerance, GUARD_GROWTH};
 pub use report::{ReshapeEnergies, ReshapeReport};

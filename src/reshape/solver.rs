@@ -52,7 +52,7 @@ impl ReshapeSolver {
 
     /// [`Self::new`] starting from `moved`, an earlier result on `original` (same faces): the
     /// deviation, `v_ori` of Eq. 14 and `l*` of Eq. 15 still refer to `original`. What the
-    /// alternating schedule ([`super::alternate`]) needs after each field step.
+    /// alternating schedule ([`super::AlternatingSolver`]) needs after each field step.
     pub fn resume(original: &TriMesh, moved: &TriMesh, field: &[f64], params: ReshapeParams) -> Result<ReshapeSolver, ReshapeError> {
         validate_params(&params)?;
         validate_field(original, field)?;

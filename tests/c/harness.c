@@ -25,6 +25,7 @@ static void run_starts(const char *scratch, const Cylinder *cylinder, const Cyli
     test_slope(cylinder);
     test_search(small);
     test_reshape(small);
+    test_alternation(small);
     test_web();
 }
 

@@ -76,6 +76,11 @@ void test_base_mesh_web(const LmlMesh *reference, const LmlStripWeb *web, const 
  * every invalid input, stepping, positions and deviations against the distance from the axis. */
 void test_reshape(const Cylinder *cylinder);
 
+/* The alternating schedule (Sec. 3.3) of field and surface steps on the cylinder towards 45
+ * degrees within an absolute tolerance: every invalid input, stepping by rounds, positions,
+ * field and deviations, and the resulting level curves against the moved surface's normals. */
+void test_alternation(const Cylinder *cylinder);
+
 /* Base-mesh optimisation (Sec. 3.5) with torsion-free nodes (Sec. 5.2.1) on a finer patch of the
  * cylinder: the net of +-45 degree helices, perturbed, stepped to convergence: every invalid input,
  * the vertices back on the cylinder and geodesic, the nodes' ruling angles, the strips of both

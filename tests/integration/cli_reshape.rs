@@ -159,3 +159,43 @@ fn an_asymptotic_design_that_misses_names_no_reshape() {
     assert!(message.contains("no acceptable family") && !message.contains("reshape"), "{message}");
     assert!(read_json(&dir.path("d/report.json")).get("reshape_trial").is_none());
 }
+
+#[test]
+fn alternating_field_and_surface_steps_meet_theta_within_the_tolerance() {
+    use lamella::curves::{extract_level_curves, uniform_levels};
+    use lamella::field::Family;
+    use lamella::quality::{family_angles, DEFAULT_SPACING_EDGES};
+    let dir = Scratch::new("reshape-alternate");
+    let mesh = cylinder_files(&dir);
+    let args = ["reshape", "--session", "session.bin", "--theta", "45", "--alternate", "4", "--max-iterations", "40", "--tolerance", "1%", "--strips", "8", "--out", "a"];
+    let output = lamella(&dir.0, &args);
+    // The 45° family exists on the cylinder: the field steps reach it, the strips are acceptable.
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    let report = read_json(&dir.path("a/report.json"));
+    let rounds = report["alternating"]["rounds"].as_u64().expect("rounds");
+    assert!((1..=4).contains(&rounds), "{rounds} rounds");
+    if rounds < 4 {
+        assert_eq!(report["alternating"]["converged"].as_bool(), Some(true), "stopped early only on convergence");
+    }
+    assert!(!dir.path("a/reshape.bin").exists(), "an alternation writes no surface session");
+    // The new field, read back, on the moved surface: its level curves judged from outside.
+    let moved = TriMesh::read_obj(&dir.path("a/surface.obj")).expect("surface.obj is a mesh");
+    let field: Vec<f64> = std::fs::read_to_string(dir.path("a/field.csv")).expect("field.csv").lines().filter(|l| !l.starts_with('#')).map(|l| l.parse().expect("number")).collect();
+    assert_eq!(field.len(), mesh.vertex_count());
+    let levels = uniform_levels(&moved, &field, 10).expect("valid field");
+    let curves = extract_level_curves(&moved, &field, &levels).expect("levels in range");
+    let (low, high) = moved.bounding_box();
+    let angles = family_angles(&curves, Family::PseudoGeodesic { theta_degrees: 45.0 }, DEFAULT_SPACING_EDGES * moved.mean_edge_length(), (high - low).norm()).expect("curves");
+    assert!(angles.measured > 40 && angles.rms_error_degrees < 1.0 && angles.max_error_degrees < 3.0, "{angles:?}");
+    // Within 1 % of the diagonal, by every face of the original.
+    let worst = crate::reshape_cylinder::brute_force_distances(moved.positions(), &mesh).into_iter().fold(0.0, f64::max);
+    let (low, high) = mesh.bounding_box();
+    assert!(worst > 0.0 && worst <= 0.01 * (high - low).norm() * (1.0 + 1e-9), "moved {worst}");
+    assert_eq!(deviation_column(&dir.path("a/deviation.csv")).len(), mesh.vertex_count());
+    // Bad rounds and a session to resume are refused.
+    let mut zero = args;
+    zero[6] = "0";
+    assert_bad_input(&dir.0, &zero, &["--alternate", "0"]);
+    let clash = lamella(&dir.0, &["reshape", "--resume", "x.bin", "--alternate", "3", "--out", "y"]);
+    assert_eq!(clash.status.code(), Some(2), "{}", stderr(&clash));
+}

@@ -78,6 +78,12 @@ namespace Lamella.Interop
         protected override bool ReleaseHandle() { NativeMethods.lml_reshape_free(handle); return true; }
     }
 
+    internal sealed class AlternationHandle : LamellaHandle
+    {
+        public AlternationHandle() { }
+        protected override bool ReleaseHandle() { NativeMethods.lml_alternation_free(handle); return true; }
+    }
+
     internal sealed class BaseMeshHandle : LamellaHandle
     {
         public BaseMeshHandle() { }

@@ -162,6 +162,22 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_reshape_load(byte[] bytes, UIntPtr length, out ReshapeHandle reshape);
 
+        // LmlAlternation.
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_alternation_new(MeshHandle mesh, double[] field, UIntPtr n, double thetaDegrees, double tolerance,
+            uint toleranceIsFraction, uint iterationsPerStep, out AlternationHandle alternation);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_alternation_free(IntPtr alternation);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_alternation_step(AlternationHandle alternation, uint maxRounds, out AlternationReportRecord report);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_alternation_report(AlternationHandle alternation, out AlternationReportRecord report);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_alternation_positions(AlternationHandle alternation, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_alternation_field(AlternationHandle alternation, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_alternation_deviations(AlternationHandle alternation, [Out] double[] buffer, UIntPtr capacity, out UIntPtr needed);
+
         // LmlBaseMesh.
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_base_mesh_new(MeshHandle reference, double[] xyz, UIntPtr vertexCount, uint[] polylineVertices,

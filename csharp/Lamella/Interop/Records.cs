@@ -169,6 +169,20 @@ namespace Lamella.Interop
     }
 
     /// <summary>
+    /// <c>LmlAlternationReport</c>: the state of an alternating field and surface optimisation after a step (the last
+    /// field step's report and the last surface step's). The binding hands it out as <see cref="AlternatingReport"/>.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct AlternationReportRecord
+    {
+        public ulong Rounds;
+        public ulong RoundsThisStep;
+        public ulong Converged;
+        public FieldReport Field;
+        public ReshapeReportRecord Surface;
+    }
+
+    /// <summary>
     /// <c>LmlBaseMeshReport</c>: the state of a base-mesh optimisation (lengths in the net's units, angles in degrees;
     /// index 0 is the rows, 1 the columns). The binding hands it out as <see cref="BaseMeshReport"/>.
     /// </summary>

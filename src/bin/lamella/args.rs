@@ -54,9 +54,10 @@ pub enum Command {
     View(ViewArgs),
     /// Move the surface a little so that the level sets of a fixed field become P-curves of θ
     /// (paper Sec. 3.3, Fig. 17), within a bound on the deviation from the original surface.
-    /// Writes surface.obj, deviation.csv, curves.obj, strips.obj, rulings.obj, preview.svg
-    /// (coloured by displacement), report.json; exits 3 when the strips on the moved surface
-    /// still miss θ.
+    /// Writes surface.obj, deviation.csv, reshape.bin, curves.obj, strips.obj, rulings.obj,
+    /// preview.svg (coloured by displacement), report.json; exits 3 when the strips on the moved
+    /// surface still miss θ. With --alternate the field changes too (field and surface steps in
+    /// turn) and field.csv is written instead of reshape.bin.
     Reshape(ReshapeArgs),
     /// Optimise a net's vertices (paper Sec. 3.5) so that its rows and columns form the asked
     /// families exactly near a reference surface, with --torsion-free also a common ruling of
@@ -523,9 +524,16 @@ pub struct ReshapeArgs {
     /// or m) or a percentage of the bounding-box diagonal such as 0.5% [default: 1%].
     #[arg(long, value_name = "LENGTH|P%", allow_hyphen_values = true)]
     pub tolerance: Option<String>,
-    /// Most Levenberg–Marquardt iterations of the surface, 1 to 100000.
+    /// Most Levenberg–Marquardt iterations of the surface, 1 to 100000 (with --alternate: of
+    /// each field step and each surface step).
     #[arg(long, value_name = "N", default_value_t = 300)]
     pub max_iterations: usize,
+    /// Alternate field steps (the surface fixed) and surface steps (the field fixed), at most
+    /// ROUNDS rounds, 1 to 1000, until a round in which both converge (Sec. 3.3): the field
+    /// changes too and is written as field.csv; the deviation stays within --tolerance
+    /// throughout. No reshape.bin then (a single surface session is what --resume continues).
+    #[arg(long, value_name = "ROUNDS", conflicts_with = "resume")]
+    pub alternate: Option<usize>,
     /// Number of strips on the moved surface, 1 to 1000.
     #[arg(long, value_name = "N", default_value_t = 20)]
     pub strips: usize,
