@@ -267,7 +267,8 @@ typedef struct LmlSearch LmlSearch;
 
 // A shading design session (opaque): a copy of the mesh, the site, the labels, the solver
 // state, and the strips' θ and the blocked fractions of the last strips and evaluation.
-// Create it with `lml_shading_new`, release it with `lml_shading_free`.
+// Create it with `lml_shading_new` or `lml_shading_new_from_field`, release it with
+// `lml_shading_free`.
 typedef struct LmlShading LmlShading;
 
 // The quad net and nodes of two strip families (opaque). Create it with `lml_strip_net_new`,
@@ -921,7 +922,7 @@ typedef struct LmlShadingSite {
   uint32_t direct_region;
 } LmlShadingSite;
 
-// A vertex label (`labels` of `lml_shading_new`).
+// A vertex label (`labels` of `lml_shading_new` and `lml_shading_new_from_field`).
 typedef uint32_t LmlShadingLabel;
 
 // The state of a shading optimisation after `lml_shading_step` (written by the library; the
@@ -937,9 +938,10 @@ typedef struct LmlShadingReport {
   uint64_t pass_vertices;
   uint64_t singular_vertices;
   // 1 when the start was the constant-slope family of the slope vote (Fig. 34–35), 0 when it
-  // was a height field (no usable vote, or no blocking vertex).
+  // was a height field (no usable vote, or no blocking vertex) or the caller's field
+  // (`lml_shading_new_from_field`).
   uint64_t constant_slope_start;
-  // The slope of that family against the earth axis in degrees (0 for a height field).
+  // The slope of that family against the earth axis in degrees (0 for any other start).
   double start_slope_degrees;
   // `E_fair`, `E_grad`, `E_block` (Eq. 26), `E_light` (Eq. 27), the constraints, and the
   // weighted total minimised (Eq. 25).
@@ -2799,7 +2801,8 @@ LmlStatus lml_shading_site_default(struct LmlShadingSite *out);
 // blocks), from the paper's start (Sec. 6, Fig. 34–35): when some vertex blocks, the
 // constant-slope family about the earth axis of the slope most faces vote for (the height along
 // the earth axis when no face votes or none is steep enough for it; `LmlShadingReport` says
-// which), else the height across the central light of the pass region.
+// which), else the height across the central light of the pass region. To start from a field of
+// your own, use `lml_shading_new_from_field`.
 //
 // - `mesh`: the surface (copied).
 // - `site`: the site, dates and hours (copied); the block region `R_l` comes from the dates and
@@ -2819,6 +2822,28 @@ LmlStatus lml_shading_new(const struct LmlMesh *mesh,
                           size_t n,
                           uint32_t ring,
                           struct LmlShading **out);
+
+// Starts a shading design like `lml_shading_new`, but from the caller's field instead of the
+// paper's start (as `lamella shade --start-field`): the session's field right after creation
+// (`lml_shading_field`) is `start_field` (up to the rounding of the solver's internal rescaling,
+// about 1 ulp), and `LmlShadingReport::constant_slope_start` is 0.
+//
+// - `mesh`, `site`, `labels`, `n`, `ring`, `out`: as `lml_shading_new`.
+// - `start_field`: `n` doubles, one value per mesh vertex (in vertex order), not constant, each
+//   finite with magnitude at most 1e100; its level curves should roughly run where the strips
+//   are wanted. Copied.
+//
+// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (as `lml_shading_new`, and a NULL
+// `start_field`, a non-finite value or one beyond ±1e100 in it: the message names the argument
+// `start_field` and the vertex); `LML_STATUS_SINGULAR_FIELD` (`start_field` is constant, or its
+// gradient vanishes everywhere: no level curves).
+LmlStatus lml_shading_new_from_field(const struct LmlMesh *mesh,
+                                     const struct LmlShadingSite *site,
+                                     const LmlShadingLabel *labels,
+                                     size_t n,
+                                     uint32_t ring,
+                                     const double *start_field,
+                                     struct LmlShading **out);
 
 // Releases a session. NULL is accepted and ignored. The handle must not be used again.
 void lml_shading_free(struct LmlShading *shading);

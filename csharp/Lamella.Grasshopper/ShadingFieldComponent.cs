@@ -16,7 +16,7 @@ namespace Lamella.Grasshopper
     {
         public ShadingFieldComponent()
             : base("Shading Field", "Shading",
-                "A shading system (paper Sec. 6): strips along the level curves of a field optimised so that their planes block the sun of the dates and hours at the site (or let it through where the mask says so), and the sun-path check through them (rays every hour of every day from just behind the surface). Solves when Solve is true.",
+                "A shading system (paper Sec. 6): strips along the level curves of a field optimised so that their planes block the sun of the dates and hours at the site (or let it through where the mask says so), and the sun-path check through them (rays every hour of every day from just behind the surface). Starts from the paper's start, or from a given Start Field. Solves when Solve is true.",
                 "StripField")
         {
         }
@@ -40,6 +40,11 @@ namespace Lamella.Grasshopper
             // Appended after Solve, so that documents saved with the first ten inputs keep their wiring.
             pManager.AddTextParameter("Pass Hours", "PH", "Daily hours H..H whose sun the pass vertices (Mask 1) let through. Empty (the default): the Hours.", GH_ParamAccess.item, "");
             pManager.AddIntegerParameter("Ring", "Rg", "Width in edge rings of the free transition on each side of a block/pass border, ≥ 0. Default 1.", GH_ParamAccess.item, 1);
+            // Appended after Ring, so that documents saved with the first twelve inputs keep their wiring.
+            pManager.AddNumberParameter("Start Field", "SF",
+                "Optional: the field to start from, one value per vertex of the mesh (finite, not constant; vertices welded by the mesh cleaning take the first one's value). Default: the paper's start (the constant-slope family of the slope vote).",
+                GH_ParamAccess.list);
+            pManager[12].Optional = true;
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -59,6 +64,7 @@ namespace Lamella.Grasshopper
             var north = new Vector3d(0, 1, 0);
             string dates = "06-01..08-31", hours = "10..16", passHours = null;
             var mask = new List<double>();
+            var startValues = new List<double>();
             int count = 10, maxIterations = 100, ring = 1;
             bool solveNow = false;
             DA.GetData(1, ref latitude);
@@ -72,6 +78,7 @@ namespace Lamella.Grasshopper
             DA.GetData(9, ref solveNow);
             DA.GetData(10, ref passHours);
             DA.GetData(11, ref ring);
+            DA.GetDataList(12, startValues);
             if (maxIterations < 1 || count < 1)
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Error, "Strips and Max Iterations must be at least 1");
@@ -94,12 +101,18 @@ namespace Lamella.Grasshopper
             CleanMesh clean = CleanMeshInput(input);
             ShadingLabel[] labels = Labels(clean, mask);
             if (labels == null) return;
+            double[] startField = null;
+            if (startValues.Count > 0)
+            {
+                startField = StartField(clean, startValues);
+                if (startField == null) return;
+            }
             ShadingReport report;
             double[] fractions;
             SunPathSummary summary;
             double[] thetas;
             using (LamellaMesh mesh = LamellaMesh.FromArrays(clean.Xyz, clean.Triangles))
-            using (var shading = new ShadingSolver(mesh, site, labels, ring))
+            using (var shading = startField == null ? new ShadingSolver(mesh, site, labels, ring) : new ShadingSolver(mesh, site, labels, ring, startField))
             {
                 report = shading.Report;
                 while (report.Iterations < maxIterations && !report.IsConverged)
@@ -135,6 +148,30 @@ namespace Lamella.Grasshopper
 
         private static string Share(double? fraction) =>
             fraction.HasValue ? string.Format(CultureInfo.InvariantCulture, "{0:0.#} %", 100 * fraction.Value) : "–";
+
+        /// <summary>
+        /// The start field per clean vertex from the values per input vertex: a welded vertex takes the value of the first
+        /// input vertex welded into it (whose position it keeps); null after an error message.
+        /// </summary>
+        private double[] StartField(CleanMesh clean, List<double> values)
+        {
+            if (values.Count != clean.InputVertexCount)
+            {
+                AddRuntimeMessage(GH_RuntimeMessageLevel.Error, string.Format(CultureInfo.InvariantCulture,
+                    "Start Field has {0} values but the mesh {1} vertices", values.Count, clean.InputVertexCount));
+                return null;
+            }
+            var field = new double[clean.VertexCount];
+            var taken = new bool[clean.VertexCount];
+            for (int v = 0; v < values.Count; v++)
+            {
+                int c = clean.VertexMap[v];
+                if (c < 0 || taken[c]) continue;
+                field[c] = values[v];
+                taken[c] = true;
+            }
+            return field;
+        }
 
         /// <summary>One label per clean vertex from the mask per input vertex (every vertex blocks without a mask); null after an error message.</summary>
         private ShadingLabel[] Labels(CleanMesh clean, List<double> mask)

@@ -6,8 +6,9 @@ namespace Lamella.Tests
     /// <summary>
     /// Shading designs through the binding (paper Sec. 6) on a small south-facing vertical facade (the plane y = 0,
     /// north +y, up +z) under the noon sun of late June at 47.4° north: strips orthogonal to the sun (θ = 90° ∓ the noon
-    /// elevation, each quad's plane measured against the sun direction), the interior's direct-sun hours blocked, the
-    /// strips' verdict on a twisted facade, invalid arguments named.
+    /// elevation, each quad's plane measured against the sun direction), the interior's direct-sun hours blocked (also
+    /// from a given start field, which the session holds until the first step), the strips' verdict on a
+    /// twisted facade, invalid arguments and start fields named.
     /// </summary>
     [TestFixture]
     public class ShadingTests
@@ -83,49 +84,60 @@ namespace Lamella.Tests
                 Assert.IsTrue(report.StartSlopeDegrees.HasValue);
                 Assert.LessOrEqual(Math.Abs(report.StartSlopeDegrees.Value), 2.5);
                 Assert.AreEqual(Vertices, shading.Field().Length);
-                Assert.IsTrue(strips.Verdict.IsAcceptable, strips.Verdict.Message);
-                double[] thetas = shading.Thetas();
-                Assert.AreEqual(strips.Count, thetas.Length);
-                foreach (double theta in thetas)
-                {
-                    Assert.Less(Math.Min(Math.Abs(theta - (90.0 + NoonElevation)), Math.Abs(theta - (90.0 - NoonElevation))), 5.0, "θ " + theta);
-                }
-                // Every quad's plane is orthogonal to the noon sun (0, −cos e, sin e) within a few degrees.
+                // Started near the horizontal, every quad's plane ends orthogonal to the noon sun itself.
                 double e = NoonElevation * Math.PI / 180.0;
-                var sun = new[] { 0.0, -Math.Cos(e), Math.Sin(e) };
-                double[] xyz = strips.Vertices();
-                int[] quads = strips.Quads();
-                Assert.Greater(quads.Length, 0);
-                double worst = 0.0;
-                for (int q = 0; q < quads.Length; q += 4)
-                {
-                    double[] p0 = Vec.At(xyz, quads[q]), p1 = Vec.At(xyz, quads[q + 1]), p2 = Vec.At(xyz, quads[q + 2]), p3 = Vec.At(xyz, quads[q + 3]);
-                    double[] normal = Vec.Cross(Vec.Sub(p2, p0), Vec.Sub(p3, p1));
-                    double angle = Vec.Degrees(Math.Abs(Vec.Dot(normal, sun)) / Vec.Norm(normal));
-                    worst = Math.Max(worst, angle);
-                }
-                Assert.Less(worst, 5.0);
-
-                SunPathSummary summary = shading.Evaluate(strips, 0.05);
-                Assert.AreEqual(30, summary.BlockSuns, "15 days × the hours 11.5 and 12.5");
-                Assert.IsTrue(summary.BlockFraction.HasValue);
-                Assert.GreaterOrEqual(summary.BlockFraction.Value, 0.9);
-                Assert.IsNull(summary.PassFraction);
-                double?[] fractions = shading.VertexFractions();
-                Assert.AreEqual(Vertices, fractions.Length);
-                ShadingLabel[] labels = Labels();
-                double sum = 0.0;
-                int count = 0;
-                for (int v = 0; v < Vertices; v++)
-                {
-                    Assert.IsTrue(fractions[v].HasValue);
-                    if (labels[v] != ShadingLabel.Block) continue;
-                    sum += fractions[v].Value;
-                    count++;
-                }
-                // Every sample sees the same suns on a plane: the region's fraction is its vertices' mean.
-                Assert.AreEqual(summary.BlockFraction.Value, sum / count, 1e-12);
+                CheckNoonBlocking(shading, strips, new[] { new[] { 0.0, -Math.Cos(e), Math.Sin(e) } });
             }
+        }
+
+        /// <summary>
+        /// What strips on the plane facade must do against the noon sun: acceptable, θ within 5° of 90° ∓ the noon
+        /// elevation, every quad's plane orthogonal to one of <paramref name="suns"/> within 5°, the block region's
+        /// direct-sun hours blocked (at least 0.9, the mean of its vertices' fractions).
+        /// </summary>
+        private static void CheckNoonBlocking(ShadingSolver shading, Strips strips, double[][] suns)
+        {
+            Assert.IsTrue(strips.Verdict.IsAcceptable, strips.Verdict.Message);
+            double[] thetas = shading.Thetas();
+            Assert.AreEqual(strips.Count, thetas.Length);
+            foreach (double theta in thetas)
+            {
+                Assert.Less(Math.Min(Math.Abs(theta - (90.0 + NoonElevation)), Math.Abs(theta - (90.0 - NoonElevation))), 5.0, "θ " + theta);
+            }
+            // Every quad's plane is orthogonal to one of the suns within a few degrees.
+            double[] xyz = strips.Vertices();
+            int[] quads = strips.Quads();
+            Assert.Greater(quads.Length, 0);
+            double worst = 0.0;
+            for (int q = 0; q < quads.Length; q += 4)
+            {
+                double[] p0 = Vec.At(xyz, quads[q]), p1 = Vec.At(xyz, quads[q + 1]), p2 = Vec.At(xyz, quads[q + 2]), p3 = Vec.At(xyz, quads[q + 3]);
+                double[] normal = Vec.Cross(Vec.Sub(p2, p0), Vec.Sub(p3, p1));
+                double angle = double.PositiveInfinity;
+                foreach (double[] sun in suns) angle = Math.Min(angle, Vec.Degrees(Math.Abs(Vec.Dot(normal, sun)) / Vec.Norm(normal)));
+                worst = Math.Max(worst, angle);
+            }
+            Assert.Less(worst, 5.0);
+
+            SunPathSummary summary = shading.Evaluate(strips, 0.05);
+            Assert.AreEqual(30, summary.BlockSuns, "15 days × the hours 11.5 and 12.5");
+            Assert.IsTrue(summary.BlockFraction.HasValue);
+            Assert.GreaterOrEqual(summary.BlockFraction.Value, 0.9);
+            Assert.IsNull(summary.PassFraction);
+            double?[] fractions = shading.VertexFractions();
+            Assert.AreEqual(Vertices, fractions.Length);
+            ShadingLabel[] labels = Labels();
+            double sum = 0.0;
+            int count = 0;
+            for (int v = 0; v < Vertices; v++)
+            {
+                Assert.IsTrue(fractions[v].HasValue);
+                if (labels[v] != ShadingLabel.Block) continue;
+                sum += fractions[v].Value;
+                count++;
+            }
+            // Every sample sees the same suns on a plane: the region's fraction is its vertices' mean.
+            Assert.AreEqual(summary.BlockFraction.Value, sum / count, 1e-12);
         }
 
         [Test]
@@ -162,6 +174,87 @@ namespace Lamella.Tests
             Assert.AreEqual(unchecked((int)0xFFA50026), colours[1]);
             Assert.AreEqual(colours[1], colours[2]);
             Assert.AreEqual(Conversion.FieldColours.Missing, colours[3]);
+        }
+
+        /// <summary>
+        /// Sun directions (x east, y north, z up) of the hours 11.5 to 12.5 true solar time (hour angle H within ±7.5°, every
+        /// 0.25°) at 47.4° north and declination 23.3° (late June): (−cos δ sin H, sin δ cos φ − cos δ cos H sin φ,
+        /// sin δ sin φ + cos δ cos H cos φ).
+        /// </summary>
+        private static double[][] SunsOfTheHours()
+        {
+            double degree = Math.PI / 180.0, phi = 47.4 * degree, delta = 23.3 * degree;
+            var suns = new double[61][];
+            for (int k = 0; k < suns.Length; k++)
+            {
+                double h = (-7.5 + 0.25 * k) * degree;
+                suns[k] = new[]
+                {
+                    -Math.Cos(delta) * Math.Sin(h),
+                    Math.Sin(delta) * Math.Cos(phi) - Math.Cos(delta) * Math.Cos(h) * Math.Sin(phi),
+                    Math.Sin(delta) * Math.Sin(phi) + Math.Cos(delta) * Math.Cos(h) * Math.Cos(phi),
+                };
+            }
+            return suns;
+        }
+
+        /// <summary>The height z tilted by a quarter of x (level curves at 14° to the horizontal): not the default start.</summary>
+        private static double[] TiltedHeight()
+        {
+            var field = new double[Vertices];
+            for (int v = 0; v < Vertices; v++) field[v] = (-2.0 + 4.0 * (v / (Cells + 1)) / Cells) + 0.25 * (-2.0 + 4.0 * (v % (Cells + 1)) / Cells);
+            return field;
+        }
+
+        [Test]
+        public void AGivenStartFieldIsHonoured()
+        {
+            using (var mesh = Facade(0.0))
+            {
+                double[] start = TiltedHeight();
+                using (var shading = new ShadingSolver(mesh, Noon(), Labels(), 0, start))
+                {
+                    // Before any step the field is the start, up to the rounding of the solver's internal scaling (f · s / s).
+                    double[] field = shading.Field();
+                    Assert.AreEqual(start.Length, field.Length);
+                    double largest = 0.0;
+                    foreach (double f in start) largest = Math.Max(largest, Math.Abs(f));
+                    for (int v = 0; v < Vertices; v++) Assert.AreEqual(start[v], field[v], 2 * 2.220446049250313e-16 * largest, "vertex " + v);
+                    ShadingReport report = shading.Report;
+                    Assert.AreEqual(0, report.Iterations);
+                    Assert.IsNull(report.StartSlopeDegrees, "no constant-slope start");
+                    for (int k = 0; k < 6 && !report.IsConverged; k++) report = shading.Step(10);
+                    Assert.Greater(report.Iterations, 0);
+                    // Started 14° off the horizontal, the curves need only turn until they are orthogonal to some sun of
+                    // the hours (up to 7.5° off the horizontal at 11.5 h): each quad's plane against the nearest of them.
+                    using (var strips = shading.BuildStrips(6, 1.5)) CheckNoonBlocking(shading, strips, SunsOfTheHours());
+                }
+            }
+        }
+
+        [Test]
+        public void ABadStartFieldIsRefusedWithTheNativeMessage()
+        {
+            using (var mesh = Facade(0.0))
+            {
+                double[] start = TiltedHeight();
+                start[11] = double.NaN;
+                var error = Assert.Throws<LamellaException>(() => new ShadingSolver(mesh, Noon(), Labels(), 0, start));
+                Assert.AreEqual(Status.InvalidArgument, error.Status);
+                StringAssert.Contains("start_field", error.NativeMessage);
+                StringAssert.Contains("vertex 11", error.NativeMessage);
+                var constant = new double[Vertices];
+                for (int v = 0; v < Vertices; v++) constant[v] = 1.5;
+                error = Assert.Throws<LamellaException>(() => new ShadingSolver(mesh, Noon(), Labels(), 0, constant));
+                Assert.AreEqual(Status.SingularField, error.Status);
+                StringAssert.Contains("constant", error.NativeMessage);
+                // Labels and start of the same wrong length: the native count check.
+                error = Assert.Throws<LamellaException>(() => new ShadingSolver(mesh, Noon(), new ShadingLabel[Vertices - 1], 0, new double[Vertices - 1]));
+                StringAssert.Contains("labels for 49 vertices", error.NativeMessage);
+                // A start of another length than the labels never reaches the library (it reads as many values as labels).
+                Assert.Throws<ArgumentException>(() => new ShadingSolver(mesh, Noon(), Labels(), 0, new double[Vertices - 1]));
+                Assert.Throws<ArgumentNullException>(() => new ShadingSolver(mesh, Noon(), Labels(), 0, null));
+            }
         }
 
         [Test]

@@ -32,7 +32,7 @@ namespace Lamella
         public long PassVertices { get; }
         /// <summary>Light vertices where the level curve is not regular.</summary>
         public long SingularVertices { get; }
-        /// <summary>The slope (degrees, against the earth axis) of the constant-slope family the field started from (paper Fig. 34–35), or null for a height-field start.</summary>
+        /// <summary>The slope (degrees, against the earth axis) of the constant-slope family the field started from (paper Fig. 34–35), or null for a height-field start or a given start field.</summary>
         public double? StartSlopeDegrees { get; }
         /// <summary>E_fair.</summary>
         public double EnergyFair { get; }
@@ -95,6 +95,28 @@ namespace Lamella
             if (labels == null) throw new ArgumentNullException(nameof(labels));
             if (ring < 0) throw new ArgumentOutOfRangeException(nameof(ring));
             Native.Check(NativeMethods.lml_shading_new(mesh.Handle, ref site, labels, Native.Size(labels.Length), (uint)ring, out handle));
+        }
+
+        /// <summary>
+        /// Starts the design like <see cref="ShadingSolver(LamellaMesh, ShadingSite, ShadingLabel[], int)"/>, but from
+        /// <paramref name="startField"/> (one value per vertex, as many as <paramref name="labels"/>; not constant, finite,
+        /// magnitude at most 1e100) instead of the paper's start (<c>lml_shading_new_from_field</c>, the CLI's
+        /// <c>--start-field</c>): <see cref="Field"/> returns it (up to about 1 ulp of rescaling) until the first step, and
+        /// <see cref="ShadingReport.StartSlopeDegrees"/> is null.
+        /// </summary>
+        /// <exception cref="ArgumentException"><paramref name="startField"/> and <paramref name="labels"/> differ in length.</exception>
+        /// <exception cref="LamellaException">As the other constructor, and a non-finite or too large start value (the native
+        /// message names the vertex) or a constant start field (<see cref="Status.SingularField"/>).</exception>
+        public ShadingSolver(LamellaMesh mesh, ShadingSite site, ShadingLabel[] labels, int ring, double[] startField)
+        {
+            if (mesh == null) throw new ArgumentNullException(nameof(mesh));
+            if (labels == null) throw new ArgumentNullException(nameof(labels));
+            if (startField == null) throw new ArgumentNullException(nameof(startField));
+            if (ring < 0) throw new ArgumentOutOfRangeException(nameof(ring));
+            // The C function reads n labels and n start values: a shorter array must not reach it.
+            if (startField.Length != labels.Length)
+                throw new ArgumentException(startField.Length + " start values for " + labels.Length + " labels", nameof(startField));
+            Native.Check(NativeMethods.lml_shading_new_from_field(mesh.Handle, ref site, labels, Native.Size(labels.Length), (uint)ring, startField, out handle));
         }
 
         /// <summary>Runs at most <paramref name="maxIterations"/> iterations; returns the state (converged or not).</summary>

@@ -16,7 +16,7 @@ use crate::shading::{
     ShadingReport, ShadingSolver, ShadingWeights, Site, StartKind, VertexLabel,
 };
 
-/// A vertex label (`labels` of `lml_shading_new`).
+/// A vertex label (`labels` of `lml_shading_new` and `lml_shading_new_from_field`).
 pub type LmlShadingLabel = u32;
 /// The vertex's strips block the light of the block region (`E_block`, Eq. 26).
 pub const LML_SHADING_BLOCK: LmlShadingLabel = 0;
@@ -96,9 +96,10 @@ pub struct LmlShadingReport {
     pub pass_vertices: u64,
     pub singular_vertices: u64,
     /// 1 when the start was the constant-slope family of the slope vote (Fig. 34–35), 0 when it
-    /// was a height field (no usable vote, or no blocking vertex).
+    /// was a height field (no usable vote, or no blocking vertex) or the caller's field
+    /// (`lml_shading_new_from_field`).
     pub constant_slope_start: u64,
-    /// The slope of that family against the earth axis in degrees (0 for a height field).
+    /// The slope of that family against the earth axis in degrees (0 for any other start).
     pub start_slope_degrees: f64,
     /// `E_fair`, `E_grad`, `E_block` (Eq. 26), `E_light` (Eq. 27), the constraints, and the
     /// weighted total minimised (Eq. 25).
@@ -111,11 +112,12 @@ pub struct LmlShadingReport {
 }
 
 impl LmlShadingReport {
-    fn of(r: &ShadingReport, start: StartKind) -> LmlShadingReport {
+    /// The report of a session started from `start` (`None`: the caller's field).
+    fn of(r: &ShadingReport, start: Option<StartKind>) -> LmlShadingReport {
         let e = &r.energies;
         let slope = match start {
-            StartKind::ConstantSlope { slope_degrees } => Some(slope_degrees),
-            StartKind::EarthAxisHeight | StartKind::AcrossCentralLight => None,
+            Some(StartKind::ConstantSlope { slope_degrees }) => Some(slope_degrees),
+            Some(StartKind::EarthAxisHeight | StartKind::AcrossCentralLight) | None => None,
         };
         LmlShadingReport {
             constant_slope_start: u64::from(slope.is_some()),
@@ -154,10 +156,12 @@ pub struct LmlSunPathSummary {
 
 /// A shading design session (opaque): a copy of the mesh, the site, the labels, the solver
 /// state, and the strips' θ and the blocked fractions of the last strips and evaluation.
-/// Create it with `lml_shading_new`, release it with `lml_shading_free`.
+/// Create it with `lml_shading_new` or `lml_shading_new_from_field`, release it with
+/// `lml_shading_free`.
 pub struct LmlShading {
     solver: ShadingSolver,
-    start: StartKind,
+    /// How the library made the start field; `None` for the caller's (`lml_shading_new_from_field`).
+    start: Option<StartKind>,
     mesh: TriMesh,
     sites: (Site, Site),
     /// θ of every strip of the last `lml_shading_strips`, in strip order.
@@ -209,7 +213,8 @@ pub unsafe extern "C" fn lml_shading_site_default(out: *mut LmlShadingSite) -> L
 /// blocks), from the paper's start (Sec. 6, Fig. 34–35): when some vertex blocks, the
 /// constant-slope family about the earth axis of the slope most faces vote for (the height along
 /// the earth axis when no face votes or none is steep enough for it; `LmlShadingReport` says
-/// which), else the height across the central light of the pass region.
+/// which), else the height across the central light of the pass region. To start from a field of
+/// your own, use `lml_shading_new_from_field`.
 ///
 /// - `mesh`: the surface (copied).
 /// - `site`: the site, dates and hours (copied); the block region `R_l` comes from the dates and
@@ -232,41 +237,102 @@ pub unsafe extern "C" fn lml_shading_new(
     ring: u32,
     out: *mut *mut LmlShading,
 ) -> LmlStatus {
-    guarded(|| {
-        // SAFETY (all blocks): the pointer contracts are those documented above.
-        let mut out = unsafe { Out::new(out, "out") }?;
-        out.set(std::ptr::null_mut());
-        let mesh = unsafe { handle(mesh, "mesh") }?;
-        let site = unsafe { handle(site, "site") }?;
-        if n != mesh.mesh.vertex_count() {
-            return Err(Failure::argument("n", format!("{n} labels for {} vertices", mesh.mesh.vertex_count())));
+    // SAFETY: the pointer contracts are those documented above.
+    guarded(|| unsafe { create(mesh, site, labels, n, ring, None, out) })
+}
+
+/// Starts a shading design like `lml_shading_new`, but from the caller's field instead of the
+/// paper's start (as `lamella shade --start-field`): the session's field right after creation
+/// (`lml_shading_field`) is `start_field` (up to the rounding of the solver's internal rescaling,
+/// about 1 ulp), and `LmlShadingReport::constant_slope_start` is 0.
+///
+/// - `mesh`, `site`, `labels`, `n`, `ring`, `out`: as `lml_shading_new`.
+/// - `start_field`: `n` doubles, one value per mesh vertex (in vertex order), not constant, each
+///   finite with magnitude at most 1e100; its level curves should roughly run where the strips
+///   are wanted. Copied.
+///
+/// Returns `LML_STATUS_OK`; `LML_STATUS_INVALID_ARGUMENT` (as `lml_shading_new`, and a NULL
+/// `start_field`, a non-finite value or one beyond ±1e100 in it: the message names the argument
+/// `start_field` and the vertex); `LML_STATUS_SINGULAR_FIELD` (`start_field` is constant, or its
+/// gradient vanishes everywhere: no level curves).
+#[no_mangle]
+pub unsafe extern "C" fn lml_shading_new_from_field(
+    mesh: *const LmlMesh,
+    site: *const LmlShadingSite,
+    labels: *const LmlShadingLabel,
+    n: usize,
+    ring: u32,
+    start_field: *const f64,
+    out: *mut *mut LmlShading,
+) -> LmlStatus {
+    // SAFETY: the pointer contracts are those documented above.
+    guarded(|| unsafe { create(mesh, site, labels, n, ring, Some(start_field), out) })
+}
+
+/// The body of `lml_shading_new` (`start_field` `None`: the paper's start) and
+/// `lml_shading_new_from_field` (`Some`: the caller's `n` values, checked with the library's
+/// field validation, errors naming `start_field` and the vertex).
+///
+/// # Safety
+/// The pointer contracts of `lml_shading_new_from_field`.
+unsafe fn create(
+    mesh: *const LmlMesh,
+    site: *const LmlShadingSite,
+    labels: *const LmlShadingLabel,
+    n: usize,
+    ring: u32,
+    start_field: Option<*const f64>,
+    out: *mut *mut LmlShading,
+) -> Result<LmlStatus, Failure> {
+    // SAFETY (all blocks): forwarded contracts.
+    let mut out = unsafe { Out::new(out, "out") }?;
+    out.set(std::ptr::null_mut());
+    let mesh = unsafe { handle(mesh, "mesh") }?;
+    let site = unsafe { handle(site, "site") }?;
+    if n != mesh.mesh.vertex_count() {
+        return Err(Failure::argument("n", format!("{n} labels for {} vertices", mesh.mesh.vertex_count())));
+    }
+    let codes = unsafe { input(labels, n, "labels") }?;
+    let given = match start_field {
+        Some(values) => {
+            let values = unsafe { input(values, n, "start_field") }?;
+            crate::field::validate_field(&mesh.mesh, values).map_err(|e| {
+                let failure = Failure::from(e);
+                Failure::new(failure.status, format!("argument `start_field`: {}", failure.message))
+            })?;
+            Some(values)
         }
-        let codes = unsafe { input(labels, n, "labels") }?;
-        let labels = codes
-            .iter()
-            .enumerate()
-            .map(|(v, &code)| match code {
-                LML_SHADING_BLOCK => Ok(VertexLabel::Block),
-                LML_SHADING_PASS => Ok(VertexLabel::Pass),
-                LML_SHADING_FREE => Ok(VertexLabel::Free),
-                other => Err(Failure::argument(&format!("labels[{v}]"), format!("must be 0 (block), 1 (pass) or 2 (free), got {other}"))),
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        if ring > 100 {
-            return Err(Failure::argument("ring", format!("must lie in 0..=100, got {ring}")));
+        None => None,
+    };
+    let labels = codes
+        .iter()
+        .enumerate()
+        .map(|(v, &code)| match code {
+            LML_SHADING_BLOCK => Ok(VertexLabel::Block),
+            LML_SHADING_PASS => Ok(VertexLabel::Pass),
+            LML_SHADING_FREE => Ok(VertexLabel::Free),
+            other => Err(Failure::argument(&format!("labels[{v}]"), format!("must be 0 (block), 1 (pass) or 2 (free), got {other}"))),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    if ring > 100 {
+        return Err(Failure::argument("ring", format!("must lie in 0..=100, got {ring}")));
+    }
+    let (block_site, pass_site) = site.sites();
+    let frame = block_site.frame()?;
+    pass_site.frame().map_err(|e| Failure::new(LmlStatus::InvalidArgument, format!("pass hours: {e}")))?;
+    let block_region = if site.direct_region != 0 { LightRegion::new(site.delta_degrees, site.gamma_degrees)? } else { LightRegion::of_site(&block_site)? };
+    let pass_region = LightRegion::of_site(&pass_site)?;
+    let labels = with_transition_ring(&mesh.mesh, &labels, ring as usize)?;
+    let params = ShadingParams { pass_region, weights: ShadingWeights::for_labels(&labels), ..ShadingParams::new(frame, block_region) };
+    let (solver, start) = match given {
+        Some(field) => (ShadingSolver::new(&mesh.mesh, field, &labels, params)?, None),
+        None => {
+            let start = default_start(&mesh.mesh, &params, &labels);
+            (ShadingSolver::new(&mesh.mesh, &start.field, &labels, params)?, Some(start.kind))
         }
-        let (block_site, pass_site) = site.sites();
-        let frame = block_site.frame()?;
-        pass_site.frame().map_err(|e| Failure::new(LmlStatus::InvalidArgument, format!("pass hours: {e}")))?;
-        let block_region = if site.direct_region != 0 { LightRegion::new(site.delta_degrees, site.gamma_degrees)? } else { LightRegion::of_site(&block_site)? };
-        let pass_region = LightRegion::of_site(&pass_site)?;
-        let labels = with_transition_ring(&mesh.mesh, &labels, ring as usize)?;
-        let params = ShadingParams { pass_region, weights: ShadingWeights::for_labels(&labels), ..ShadingParams::new(frame, block_region) };
-        let start = default_start(&mesh.mesh, &params, &labels);
-        let solver = ShadingSolver::new(&mesh.mesh, &start.field, &labels, params)?;
-        out.set_owned(LmlShading { solver, start: start.kind, mesh: mesh.mesh.clone(), sites: (block_site, pass_site), thetas: Vec::new(), fractions: Vec::new() });
-        Ok(LmlStatus::Ok)
-    })
+    };
+    out.set_owned(LmlShading { solver, start, mesh: mesh.mesh.clone(), sites: (block_site, pass_site), thetas: Vec::new(), fractions: Vec::new() });
+    Ok(LmlStatus::Ok)
 }
 
 /// Releases a session. NULL is accepted and ignored. The handle must not be used again.

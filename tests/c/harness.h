@@ -96,8 +96,9 @@ void check_base_mesh_save_and_restore(LmlBaseMesh *session);
  * reachable region about an axis across it (the ruling where the tangent planes have the slope). */
 void test_slope(const Cylinder *cylinder);
 
-/* Shading designs (Sec. 6) on a small vertical facade: every invalid input, stepping, strips
- * with one theta per curve against the noon sun's elevation, the sun-path check's blocked
- * fraction, and the strips' verdict status on a twisted facade. */
+/* Shading designs (Sec. 6) on a small vertical facade, from the paper's start and from a given
+ * field: every invalid input, stepping, strips with one theta per curve against the noon sun's
+ * elevation, the sun-path check's blocked fraction, and the strips' verdict status on a twisted
+ * facade. */
 void test_shading(void);
 #endif

@@ -222,6 +222,8 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_shading_site_default(out ShadingSite site);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_shading_new(MeshHandle mesh, ref ShadingSite site, ShadingLabel[] labels, UIntPtr n, uint ring, out ShadingHandle shading);
+        [DllImport(Library, CallingConvention = Cdecl)]
+        public static extern Status lml_shading_new_from_field(MeshHandle mesh, ref ShadingSite site, ShadingLabel[] labels, UIntPtr n, uint ring, double[] startField, out ShadingHandle shading);
         [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_shading_free(IntPtr shading);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_shading_step(ShadingHandle shading, uint maxIterations, out ShadingReportRecord report);
