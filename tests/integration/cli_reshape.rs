@@ -116,7 +116,7 @@ fn reshape_rejects_bad_input() {
 #[test]
 fn design_names_a_reshape_tolerance_that_makes_its_strips_acceptable() {
     // z = xy/5 at θ = 30°: the default design's strips miss θ (exit 3). The verdict's message
-    // names the tolerance a short reshape trial needed; reshaping with it makes the strips
+    // names the tolerance of the tightest acceptable reshape trial; reshaping with it makes the strips
     // acceptable, within 1 % of the diagonal, the deviation measured here against every face.
     use lamella::surfaces::{hyperbolic_paraboloid, HyperbolicParaboloid};
     let dir = Scratch::new("reshape-advice");
@@ -134,6 +134,9 @@ fn design_names_a_reshape_tolerance_that_makes_its_strips_acceptable() {
     assert_eq!(words[4], "--tolerance", "{message}");
     let percent: f64 = words[5].trim_end_matches('%').parse().expect("a percentage");
     assert!(percent <= 1.0, "the trial needed {percent} % of the diagonal");
+    // The tolerance named is the one the accepted trial ran with, and it held there.
+    assert_eq!(trial["allowed_percent"].as_f64(), Some(percent), "{trial}");
+    assert!(trial["deviation_percent"].as_f64().expect("deviation") <= percent * (1.0 + 1e-9), "{trial}");
 
     let output = lamella(&dir.0, &["reshape", "--session", "d/session.bin", "--theta", "30", "--tolerance", words[5], "--out", "r", "--quiet"]);
     assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));

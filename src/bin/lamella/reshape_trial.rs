@@ -1,12 +1,13 @@
-//! The short reshape trial behind `design`'s verdict (paper Sec. 3.3): when no strip pattern of
+//! The short reshape trials behind `design`'s verdict (paper Sec. 3.3): when no strip pattern of
 //! θ is acceptable, how far would the surface have to move for one to be? Each trial moves the
 //! surface with the field fixed for at most [`TRIAL_ITERATIONS`] iterations, builds the strips on
 //! the moved surface as `reshape` does, and judges them with the same verdict. The first allows
 //! [`TRIAL_TOLERANCE_PERCENT`] of the bounding-box diagonal. If it is acceptable, tighter ones
-//! follow, from [`SMALLEST_TRIAL_PERCENT`] doubling, up to the first acceptable one: the surface
-//! moves as far as the weak pull of `E^S_close` lets it, not as little as θ needs (z = xy/5 at
-//! θ = 30°: 1.2 % of the diagonal used within 2 %, yet 0.25 % is enough). The tolerance named is
-//! the largest deviation of the tightest acceptable trial, rounded up to a tenth of a per cent.
+//! follow ([`TIGHTER_TRIAL_PERCENTS`], up to the first acceptable one): the surface moves as far
+//! as the weak pull of `E^S_close` lets it, not as little as θ needs (z = xy/5 at θ = 30°: 1.2 %
+//! of the diagonal used within 2 %, yet 0.25 % is enough). The tolerance named is that of the
+//! tightest acceptable trial, so `lamella reshape` with it retraces that trial's iterations (and
+//! may run more).
 use crate::error::{CliError, CliResult};
 use crate::strips_cmd::build_strips;
 use lamella::mesh::TriMesh;
@@ -15,8 +16,9 @@ use serde_json::{json, Value};
 
 /// Largest deviation the trials allow, per cent of the bounding-box diagonal.
 pub const TRIAL_TOLERANCE_PERCENT: f64 = 2.0;
-/// The tightest tolerance tried after an acceptable first trial, per cent of the diagonal.
-pub const SMALLEST_TRIAL_PERCENT: f64 = 0.25;
+/// The tolerances tried, in order, after an acceptable first trial, per cent of the diagonal:
+/// two more trials at most (each costs as much as the first).
+pub const TIGHTER_TRIAL_PERCENTS: [f64; 2] = [0.5, 1.0];
 /// Most surface iterations of each trial.
 pub const TRIAL_ITERATIONS: usize = 100;
 
@@ -28,8 +30,6 @@ pub struct Trial {
     pub allowed_percent: f64,
     /// Largest distance of a moved vertex from the original surface, per cent of the diagonal.
     pub deviation_percent: f64,
-    /// The tolerance to ask `reshape` for (the deviation rounded up to 0.1 %).
-    pub suggested_percent: f64,
     /// The strips' worst quad angle error on the moved surface (degrees).
     pub worst_degrees: f64,
     /// Surface iterations of all trials.
@@ -58,7 +58,6 @@ pub fn reshape_trial(mesh: &TriMesh, field: &[f64], theta: f64, strips: usize, w
             acceptable: run.pattern.verdict.is_acceptable(),
             allowed_percent: allowed,
             deviation_percent,
-            suggested_percent: ((10.0 * deviation_percent).ceil() / 10.0).max(0.1),
             worst_degrees: run.pattern.metrics.max_quad_angle_error_degrees,
             iterations: solver.iterations(),
             trials: 1,
@@ -68,15 +67,13 @@ pub fn reshape_trial(mesh: &TriMesh, field: &[f64], theta: f64, strips: usize, w
     let mut best = trial(TRIAL_TOLERANCE_PERCENT)?;
     let (mut iterations, mut trials) = (best.iterations, 1);
     if best.acceptable {
-        let mut allowed = SMALLEST_TRIAL_PERCENT;
-        while allowed < TRIAL_TOLERANCE_PERCENT {
+        for allowed in TIGHTER_TRIAL_PERCENTS {
             let tighter = trial(allowed)?;
             (iterations, trials) = (iterations + tighter.iterations, trials + 1);
             if tighter.acceptable {
                 best = tighter;
                 break;
             }
-            allowed *= 2.0;
         }
     }
     (best.iterations, best.trials, best.seconds) = (iterations, trials, started.elapsed().as_secs_f64());
@@ -88,8 +85,8 @@ impl Trial {
     pub fn advice(&self, session: &str, theta: f64) -> String {
         if self.acceptable {
             format!(
-                "a trial reshape moved the surface by up to {:.2} % of its diagonal and made the strips acceptable: lamella reshape --session {session} --theta {theta} --tolerance {:.1}%",
-                self.deviation_percent, self.suggested_percent
+                "a trial reshape within {} % of the surface's diagonal (moving it by up to {:.2} %) made the strips acceptable: lamella reshape --session {session} --theta {theta} --tolerance {}%",
+                self.allowed_percent, self.deviation_percent, self.allowed_percent
             )
         } else {
             format!(
@@ -107,7 +104,6 @@ impl Trial {
             "iterations": self.iterations,
             "acceptable": self.acceptable,
             "deviation_percent": self.deviation_percent,
-            "suggested_tolerance_percent": self.suggested_percent,
             "worst_strip_plane_degrees": self.worst_degrees,
             "seconds": self.seconds,
         })
