@@ -20,7 +20,7 @@ pub const TRIAL_TOLERANCE_PERCENT: f64 = 2.0;
 /// two more trials at most (each costs as much as the first).
 pub const TIGHTER_TRIAL_PERCENTS: [f64; 2] = [0.5, 1.0];
 /// Most surface iterations of each trial.
-pub const TRIAL_ITERATIONS: usize = 100;
+pub const TRIAL_ITERATIONS: usize = 60;
 
 /// What the trials found: the tightest acceptable one, or the first if none was.
 pub struct Trial {
