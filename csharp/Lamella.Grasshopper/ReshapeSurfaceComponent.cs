@@ -122,9 +122,7 @@ namespace Lamella.Grasshopper
             double[] xyz = session.Solver.Positions(), deviations = session.Solver.Deviations();
             Message = string.Format(CultureInfo.InvariantCulture, "{0}iteration {1} · max deviation {2:0.###} · θ error {3:0.##}° RMS",
                 report.IsConverged ? "converged · " : "", report.Iterations, report.MaxDeviation, report.AngleErrorRmsDegrees);
-            DA.SetData(0, RhinoConversion.TriangleMesh(xyz, clean.Triangles));
-            DA.SetDataList(1, clean.ToInputVertices(deviations, 1, double.NaN));
-            DA.SetData(2, report.MaxDeviation);
+            SetMovedSurface(DA, clean, xyz, deviations, report.MaxDeviation);
             DA.SetData(3, string.Format(CultureInfo.InvariantCulture,
                 "{0} iterations{1}; vertex angle error {2:0.###}° RMS, {3:0.###}° max; deviation max {4:0.####}, RMS {5:0.####} (tolerance {6:0.####}); edge lengths change by up to {7:0.#} %",
                 report.Iterations, report.IsConverged ? ", converged" : "", report.AngleErrorRmsDegrees, report.AngleErrorMaxDegrees,
@@ -164,9 +162,7 @@ namespace Lamella.Grasshopper
             }
             Message = string.Format(CultureInfo.InvariantCulture, "{0}round {1} · max deviation {2:0.###} · θ error {3:0.##}° RMS",
                 report.IsConverged ? "converged · " : "", report.Rounds, surface.MaxDeviation, surface.AngleErrorRmsDegrees);
-            DA.SetData(0, RhinoConversion.TriangleMesh(xyz, clean.Triangles));
-            DA.SetDataList(1, clean.ToInputVertices(deviations, 1, double.NaN));
-            DA.SetData(2, surface.MaxDeviation);
+            SetMovedSurface(DA, clean, xyz, deviations, surface.MaxDeviation);
             DA.SetData(3, string.Format(CultureInfo.InvariantCulture,
                 "{0} rounds{1} of at most {2} field and {2} surface iterations each; last field step: {3} iterations, angle error {4:0.###}° RMS, {5:0.###}° max, {6} singular vertices; " +
                 "last surface step: {7} iterations, vertex angle error {8:0.###}° RMS, {9:0.###}° max; deviation max {10:0.####}, RMS {11:0.####} (tolerance {12:0.####}); edge lengths change by up to {13:0.#} %",
@@ -174,6 +170,14 @@ namespace Lamella.Grasshopper
                 field.SingularVertexCount, surface.Iterations, surface.AngleErrorRmsDegrees, surface.AngleErrorMaxDegrees, surface.MaxDeviation,
                 surface.RmsDeviation, surface.Tolerance, 100 * surface.MaxEdgeChange));
             if (!step.Continues) SetField(DA, xyz, clean.Triangles, session.Solver.Field(), thetaDegrees);
+        }
+
+        /// <summary>The moved surface, each input vertex's deviation and the largest (outputs 0 to 2).</summary>
+        private static void SetMovedSurface(IGH_DataAccess DA, CleanMesh clean, double[] xyz, double[] deviations, double maxDeviation)
+        {
+            DA.SetData(0, RhinoConversion.TriangleMesh(xyz, clean.Triangles));
+            DA.SetDataList(1, clean.ToInputVertices(deviations, 1, double.NaN));
+            DA.SetData(2, maxDeviation);
         }
 
         /// <summary>

@@ -22,8 +22,8 @@ pub const TIGHTER_TRIAL_PERCENTS: [f64; 2] = [0.5, 1.0];
 /// Most surface iterations of each trial.
 pub const TRIAL_ITERATIONS: usize = 60;
 
-/// What the trials found: the tightest acceptable one, or the first if none was.
-pub struct Trial {
+/// One trial: how the strips came out on the surface moved within `allowed_percent`.
+pub struct TrialRun {
     /// The strips on the moved surface are acceptable.
     pub acceptable: bool,
     /// The tolerance this trial allowed, per cent of the diagonal.
@@ -32,6 +32,14 @@ pub struct Trial {
     pub deviation_percent: f64,
     /// The strips' worst quad angle error on the moved surface (degrees).
     pub worst_degrees: f64,
+    /// Surface iterations of this trial.
+    pub iterations: usize,
+}
+
+/// What the trials found: the tightest acceptable one (or the first if none was), and what all
+/// of them cost.
+pub struct Trial {
+    pub best: TrialRun,
     /// Surface iterations of all trials.
     pub iterations: usize,
     /// How many trials ran.
@@ -46,22 +54,19 @@ pub fn reshape_trial(mesh: &TriMesh, field: &[f64], theta: f64, strips: usize, w
     let started = std::time::Instant::now();
     let (low, high) = mesh.bounding_box();
     let diagonal = (high - low).norm();
-    let trial = |allowed: f64| -> CliResult<Trial> {
+    let trial = |allowed: f64| -> CliResult<TrialRun> {
         let params = ReshapeParams { tolerance: Tolerance::DiagonalFraction(allowed / 100.0), ..ReshapeParams::new(theta) };
         let mut solver = ReshapeSolver::new(mesh, field, params).map_err(|e| CliError::internal(format!("reshape trial: {e}")))?;
         while solver.iterations() < TRIAL_ITERATIONS && !solver.is_converged() {
             solver.step(TRIAL_ITERATIONS - solver.iterations()).map_err(|e| CliError::internal(format!("reshape trial: {e}")))?;
         }
         let run = build_strips(&solver.mesh(), field, theta, strips, width, angle_tolerance)?;
-        let deviation_percent = 100.0 * solver.report().max_deviation / diagonal;
-        Ok(Trial {
+        Ok(TrialRun {
             acceptable: run.pattern.verdict.is_acceptable(),
             allowed_percent: allowed,
-            deviation_percent,
+            deviation_percent: 100.0 * solver.report().max_deviation / diagonal,
             worst_degrees: run.pattern.metrics.max_quad_angle_error_degrees,
             iterations: solver.iterations(),
-            trials: 1,
-            seconds: 0.0,
         })
     };
     let mut best = trial(TRIAL_TOLERANCE_PERCENT)?;
@@ -76,35 +81,36 @@ pub fn reshape_trial(mesh: &TriMesh, field: &[f64], theta: f64, strips: usize, w
             }
         }
     }
-    (best.iterations, best.trials, best.seconds) = (iterations, trials, started.elapsed().as_secs_f64());
-    Ok(best)
+    Ok(Trial { best, iterations, trials, seconds: started.elapsed().as_secs_f64() })
 }
 
 impl Trial {
     /// What to try next, for the verdict's message; `session` is the design's session.bin.
     pub fn advice(&self, session: &str, theta: f64) -> String {
-        if self.acceptable {
+        let best = &self.best;
+        if best.acceptable {
             format!(
                 "a trial reshape within {} % of the surface's diagonal (moving it by up to {:.2} %) made the strips acceptable: lamella reshape --session {session} --theta {theta} --tolerance {}%",
-                self.allowed_percent, self.deviation_percent, self.allowed_percent
+                best.allowed_percent, best.deviation_percent, best.allowed_percent
             )
         } else {
             format!(
                 "a trial reshape within {TRIAL_TOLERANCE_PERCENT} % of the surface's diagonal did not make the strips acceptable either (worst strip plane {:.1}° off): this θ needs another start or another surface",
-                self.worst_degrees
+                best.worst_degrees
             )
         }
     }
 
     /// The trial for report.json.
     pub fn to_json(&self) -> Value {
+        let best = &self.best;
         json!({
-            "allowed_percent": self.allowed_percent,
+            "allowed_percent": best.allowed_percent,
             "trials": self.trials,
             "iterations": self.iterations,
-            "acceptable": self.acceptable,
-            "deviation_percent": self.deviation_percent,
-            "worst_strip_plane_degrees": self.worst_degrees,
+            "acceptable": best.acceptable,
+            "deviation_percent": best.deviation_percent,
+            "worst_strip_plane_degrees": best.worst_degrees,
             "seconds": self.seconds,
         })
     }
