@@ -59,35 +59,69 @@ pub fn field_from_guide_curves(
     curves: &[Vec<EdgePoint>],
     options: &GuideCurveOptions,
 ) -> Result<GuideField, InitialisationError> {
+    let weights = validated(mesh, curves, options)?;
+    GuideFieldBasis::new(mesh)?.fit(curves, weights)
+}
+
+/// What Eq. 7 needs of the mesh alone, whatever the guides: the mesh scaled to unit mean edge
+/// length and its conformal map. The start search fits many guide sets on one mesh and builds
+/// this once.
+pub(crate) struct GuideFieldBasis<'a> {
+    mesh: &'a TriMesh,
+    unit_mesh: TriMesh,
+    map: Vec<[f64; 2]>,
+}
+
+impl<'a> GuideFieldBasis<'a> {
+    /// Errors: `SingularSystem` when the conformal map cannot be computed.
+    pub(crate) fn new(mesh: &'a TriMesh) -> Result<GuideFieldBasis<'a>, InitialisationError> {
+        let (unit_mesh, _) = mesh.unit_scaled();
+        let map = least_squares_conformal_map(&unit_mesh).ok_or(InitialisationError::SingularSystem { stage: "conformal map" })?;
+        Ok(GuideFieldBasis { mesh, unit_mesh, map })
+    }
+
+    /// [`field_from_guide_curves`] on the basis's mesh.
+    pub(crate) fn field(&self, curves: &[Vec<EdgePoint>], options: &GuideCurveOptions) -> Result<GuideField, InitialisationError> {
+        let weights = validated(self.mesh, curves, options)?;
+        self.fit(curves, weights)
+    }
+
+    /// Eq. 7 for validated curves with the weights (λ0, λ1).
+    fn fit(&self, curves: &[Vec<EdgePoint>], (trace_weight, fair_weight): (f64, f64)) -> Result<GuideField, InitialisationError> {
+        let (mesh, unit_mesh) = (self.mesh, &self.unit_mesh);
+        let linear = linear_initial_function(&self.map, curves)?;
+
+        let n = mesh.vertex_count();
+        let mut rows = LinearRows::new();
+        push_fairness_rows(&mut rows, unit_mesh, fair_weight);
+        for (i, curve) in curves.iter().enumerate() {
+            for point in curve {
+                let [a, b] = point.edge.map(|v| v as usize);
+                rows.push([(a, 1.0 - point.t), (b, point.t)], i as f64, trace_weight);
+            }
+        }
+        for (v, &value) in linear.iter().enumerate() {
+            rows.push([(v, 1.0)], value, LINEAR_PULL * unit_mesh.vertex_areas()[v]);
+        }
+        let singular = InitialisationError::SingularSystem { stage: "guide-curve fit (Eq. 7)" };
+        let field = rows.factorise(n).ok_or(singular.clone())?.solve(rows.targets()).ok_or(singular.clone())?;
+
+        let last = (curves.len() - 1) as f64;
+        let between = |f: usize| mesh.faces()[f].iter().all(|&c| (0.0..=last).contains(&field[c as usize]));
+        let gradient_target = mean_gradient_norm(mesh, &field, between)
+            .or_else(|| mean_gradient_norm(mesh, &field, |_| true))
+            .filter(|r| r.is_finite() && *r > 0.0)
+            .ok_or(singular)?;
+        Ok(GuideField { field, gradient_target })
+    }
+}
+
+/// The weights (λ0, λ1) of `options` once they and `curves` are checked.
+fn validated(mesh: &TriMesh, curves: &[Vec<EdgePoint>], options: &GuideCurveOptions) -> Result<(f64, f64), InitialisationError> {
     let trace_weight = positive_option("trace_weight", options.trace_weight)?;
     let fair_weight = positive_option("fair_weight", options.fair_weight)?;
     validate_guide_curves(mesh, curves)?;
-    let (unit_mesh, _) = mesh.unit_scaled();
-    let map = least_squares_conformal_map(&unit_mesh).ok_or(InitialisationError::SingularSystem { stage: "conformal map" })?;
-    let linear = linear_initial_function(&map, curves)?;
-
-    let n = mesh.vertex_count();
-    let mut rows = LinearRows::new();
-    push_fairness_rows(&mut rows, &unit_mesh, fair_weight);
-    for (i, curve) in curves.iter().enumerate() {
-        for point in curve {
-            let [a, b] = point.edge.map(|v| v as usize);
-            rows.push([(a, 1.0 - point.t), (b, point.t)], i as f64, trace_weight);
-        }
-    }
-    for (v, &value) in linear.iter().enumerate() {
-        rows.push([(v, 1.0)], value, LINEAR_PULL * unit_mesh.vertex_areas()[v]);
-    }
-    let singular = InitialisationError::SingularSystem { stage: "guide-curve fit (Eq. 7)" };
-    let field = rows.factorise(n).ok_or(singular.clone())?.solve(rows.targets()).ok_or(singular.clone())?;
-
-    let last = (curves.len() - 1) as f64;
-    let between = |f: usize| mesh.faces()[f].iter().all(|&c| (0.0..=last).contains(&field[c as usize]));
-    let gradient_target = mean_gradient_norm(mesh, &field, between)
-        .or_else(|| mean_gradient_norm(mesh, &field, |_| true))
-        .filter(|r| r.is_finite() && *r > 0.0)
-        .ok_or(singular)?;
-    Ok(GuideField { field, gradient_target })
+    Ok((trace_weight, fair_weight))
 }
 
 /// The linear function of Sec. 3.2.2 in the parameter domain:

@@ -39,9 +39,10 @@
 use std::collections::VecDeque;
 
 use nalgebra::{Matrix3, SymmetricEigen};
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
-use super::guide_curves::{field_from_guide_curves, GuideCurveOptions};
+use super::guide_curves::{GuideCurveOptions, GuideFieldBasis};
 use super::proxy::{carried_to, search_proxy};
 use crate::curves::{extract_level_curves, uniform_levels};
 use crate::field::{validate_params, Family, FieldError, FieldParams, FieldSolver};
@@ -356,22 +357,25 @@ impl StartSearch {
         }
     }
 
+    /// Queues the guide candidates, their fields built in parallel (each on its own, so the
+    /// fields do not depend on the thread count), in the order of sides and angles.
     fn queue_guides(&mut self) {
         self.guides_queued = true;
         let mesh = self.probed_mesh();
         let sides = boundary_segments(mesh, 0, DEFAULT_CORNER_TURN_DEGREES).map_or(0, |s| s.len());
         let theta = self.params.family.theta_degrees();
-        let mut queued = Vec::new();
-        for side in 0..sides {
-            for &start_angle in &self.options.guide_angles {
+        let starts: Vec<(usize, f64)> = (0..sides).flat_map(|side| self.options.guide_angles.iter().map(move |&angle| (side, angle))).collect();
+        let basis = GuideFieldBasis::new(mesh).map_err(|e| format!("no field from the guides: {e}"));
+        let queued: Vec<Pending> = starts
+            .par_iter()
+            .map(|&(side, start_angle)| {
                 let kind = StartKind::Guides { side, start_angle_degrees: start_angle };
-                let (field, gradient_target) = match guide_field(mesh, self.options.guides, side, start_angle, theta) {
-                    Ok((field, target)) => (Ok(field), Some(target)),
-                    Err(reason) => (Err(reason), None),
-                };
-                queued.push(Pending { kind, field, gradient_target });
-            }
-        }
+                match guide_field(&basis, mesh, self.options.guides, side, start_angle, theta) {
+                    Ok((field, target)) => Pending { kind, field: Ok(field), gradient_target: Some(target) },
+                    Err(reason) => Pending { kind, field: Err(reason), gradient_target: None },
+                }
+            })
+            .collect();
         self.pending.extend(queued);
     }
 
@@ -568,13 +572,15 @@ pub(crate) fn principal_plane(mesh: &TriMesh) -> [Vec3; 2] {
 }
 
 /// The field of `count` guides from boundary side `side` at `start_angle`, with its `E_grad`
-/// target; `Err(reason)` when they cannot be traced, cross, or give no field.
-fn guide_field(mesh: &TriMesh, count: usize, side: usize, start_angle: f64, theta: f64) -> Result<(Vec<f64>, f64), String> {
+/// target, on `mesh`, the mesh of `basis`; `Err(reason)` when they cannot be traced, cross, or
+/// give no field (the basis's own error included).
+fn guide_field(basis: &Result<GuideFieldBasis<'_>, String>, mesh: &TriMesh, count: usize, side: usize, start_angle: f64, theta: f64) -> Result<(Vec<f64>, f64), String> {
     let set = trace_guide_set(mesh, count, Some(side), start_angle, theta).map_err(|(_, e)| format!("cannot trace guides: {e}"))?;
     if !intersections(mesh, &set.curves).is_intersection_free() {
         return Err("the traced guides cross".into());
     }
     let points: Vec<_> = set.curves.iter().map(|c| c.points().to_vec()).collect();
-    let guided = field_from_guide_curves(mesh, &points, &GuideCurveOptions::default()).map_err(|e| format!("no field from the guides: {e}"))?;
+    let basis = basis.as_ref().map_err(Clone::clone)?;
+    let guided = basis.field(&points, &GuideCurveOptions::default()).map_err(|e| format!("no field from the guides: {e}"))?;
     Ok((guided.field, guided.gradient_target))
 }
