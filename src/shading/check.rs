@@ -51,7 +51,8 @@ pub fn sun_path_check(mesh: &TriMesh, labels: &[VertexLabel], strips: &[Rectifyi
     let block_suns = sun_samples(site, 1, CHECK_HOUR_STEP)?;
     let pass_suns = sun_samples(pass_site, 1, CHECK_HOUR_STEP)?;
     let triangles = strip_triangles(strips);
-    let samples = samples_behind(mesh, labels, &block_suns, offset)?;
+    let all_suns: Vec<SunSample> = block_suns.iter().chain(&pass_suns).copied().collect();
+    let samples = samples_behind(mesh, labels, &all_suns, offset)?;
     let block = evaluate_sun_path(&triangles, &samples, &block_suns)?;
     let pass = evaluate_sun_path(&triangles, &samples, &pass_suns)?;
     let vertex_fractions =

@@ -46,8 +46,10 @@ pub struct SunPathEvaluation {
 }
 
 /// The samples of a surface: its vertices moved `offset` (> 0, model units) along the vertex
-/// normal away from the sun (the normal turned so that the mean sun direction of `suns` lies in
-/// front), labelled as the vertices.
+/// normal away from the sun, labelled as the vertices. The normals are turned as one, towards
+/// the side the mean sun direction of `suns` lies on over the whole surface (area-weighted), so
+/// that "behind" is the same side everywhere: on a curved facade the mean sun may lie behind
+/// some vertices' tangent planes, and those must not be turned on their own.
 pub fn samples_behind(mesh: &TriMesh, labels: &[VertexLabel], suns: &[SunSample], offset: f64) -> Result<Vec<SamplePoint>, ShadingError> {
     if labels.len() != mesh.vertex_count() {
         return Err(ShadingError::invalid("labels", format!("{} labels for {} vertices", labels.len(), mesh.vertex_count())));
@@ -59,13 +61,15 @@ pub fn samples_behind(mesh: &TriMesh, labels: &[VertexLabel], suns: &[SunSample]
         return Err(ShadingError::SunNeverUp);
     }
     let mean_sun: Vec3 = suns.iter().map(|s| s.direction).sum();
+    let facing: f64 = mesh.smooth_normals().iter().zip(mesh.vertex_areas()).map(|(n, area)| area * n.dot(&mean_sun)).sum();
+    let side = if facing < 0.0 { -1.0 } else { 1.0 };
     Ok(mesh
         .positions()
         .iter()
         .zip(mesh.smooth_normals())
         .zip(labels)
         .map(|((p, n), &label)| {
-            let normal = if n.dot(&mean_sun) < 0.0 { -n } else { *n };
+            let normal = side * n;
             SamplePoint { position: p - normal * offset, normal, label }
         })
         .collect())

@@ -9,7 +9,7 @@ use lamella::shading::{
     day_of_year, default_start, evaluate_sun_path, light_direction, most_common_slope, samples_behind, shading_strips, solar_position, strip_triangles, sun_samples,
     with_transition_ring, Clock, DateRange, EarthFrame, HourRange, LightRegion, MonthDay, ShadingParams, ShadingSolver, Site, StartKind, VertexLabel,
 };
-use lamella::surfaces::{planar_disk, PlanarPatch};
+use lamella::surfaces::{cylinder_patch, planar_disk, CylinderPatch, PlanarPatch};
 
 const LATITUDE: f64 = 47.4;
 
@@ -264,4 +264,27 @@ fn the_default_start_is_the_constant_slope_family_of_the_voted_slope() {
         worst = worst.max((rise(n.cross(&gradient)) - slope_degrees).abs());
     }
     assert!(worst < 0.5, "level curves up to {worst}° off the slope {slope_degrees}°");
+}
+
+#[test]
+fn samples_lie_behind_a_curved_facade_on_one_side_everywhere() {
+    // A quarter-cylinder wall (R 10 m, 6 m high) turning from facing east to facing south. The
+    // mean sun of 9 h to 16 h (south-south-west) lies behind the tangent planes of its
+    // east-facing part, yet the samples there must lie inside the wall like all the others, or
+    // the east part would be judged from outside the building.
+    let wall = cylinder_patch(&CylinderPatch { radius: 10.0, span: std::f64::consts::FRAC_PI_2, height: 6.0, target_vertices: 600, irregularity: 0.3, seed: 5 }).unwrap();
+    let positions = wall.positions.iter().map(|p| Vec3::new(p.y, -p.x, p.z)).collect();
+    let mesh = TriMesh::from_vertices_and_faces(positions, wall.faces).unwrap();
+    let suns = sun_samples(&site((6, 14, 6, 28), (9.0, 16.0)), 2, 1.0).unwrap();
+    let mean_sun: Vec3 = suns.iter().map(|s| s.direction).sum();
+    let outward = |p: &Vec3| Vec3::new(p.x, p.y, 0.0).normalize();
+    let away = mesh.positions().iter().filter(|p| outward(p).dot(&mean_sun) < 0.0).count();
+    assert!(away > 50, "{away} vertices whose outward normal faces away from the mean sun");
+    let labels = vec![VertexLabel::Block; mesh.vertex_count()];
+    let offset = 0.1;
+    for (v, s) in samples_behind(&mesh, &labels, &suns, offset).unwrap().iter().enumerate() {
+        let radius = Vec3::new(s.position.x, s.position.y, 0.0).norm();
+        assert!((radius - (10.0 - offset)).abs() < 0.01, "sample {v} at radius {radius:.3} m, not {offset} m inside the wall");
+        assert!(s.normal.dot(&outward(&mesh.positions()[v])) > 0.99, "sample {v}: normal {:?} not outward", s.normal);
+    }
 }
