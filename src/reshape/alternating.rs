@@ -54,6 +54,9 @@ pub struct AlternatingSolver {
     field_params: FieldParams,
     reshape_params: ReshapeParams,
     iterations_per_step: usize,
+    /// The first round's field solver, built by [`Self::new`] (which validates the input with
+    /// it) and taken by the first round.
+    first_field_solver: Option<FieldSolver>,
     /// Distance of every vertex of `mesh` from the original surface, caller's units.
     deviations: Vec<f64>,
     report: AlternatingReport,
@@ -69,7 +72,7 @@ impl AlternatingSolver {
         let mut field_params = params.field;
         field_params.family = Family::from_theta(params.reshape.theta_degrees);
         // Both kinds of step validate their input here, before any round runs.
-        FieldSolver::new(mesh, field, field_params.clone())?;
+        let first_field_solver = FieldSolver::new(mesh, field, field_params.clone())?;
         let surface = ReshapeSolver::new(mesh, field, params.reshape.clone())?;
         Ok(AlternatingSolver {
             original: mesh.clone(),
@@ -78,6 +81,7 @@ impl AlternatingSolver {
             field_params,
             reshape_params: params.reshape,
             iterations_per_step: params.iterations_per_step,
+            first_field_solver: Some(first_field_solver),
             deviations: surface.deviations(),
             report: AlternatingReport { surface: surface.report().clone(), ..AlternatingReport::default() },
         })
@@ -88,7 +92,10 @@ impl AlternatingSolver {
     pub fn step(&mut self, max_rounds: usize) -> Result<AlternatingReport, ReshapeError> {
         let mut ran = 0;
         while ran < max_rounds && !self.report.converged {
-            let mut field_solver = FieldSolver::new(&self.mesh, &self.field, self.field_params.clone())?;
+            let mut field_solver = match self.first_field_solver.take() {
+                Some(solver) => solver,
+                None => FieldSolver::new(&self.mesh, &self.field, self.field_params.clone())?,
+            };
             let field_report = field_solver.step(self.iterations_per_step)?;
             // The warm-up (Fig. 15) guards a start against singularities; the later rounds start
             // from the field of the one before and go straight to the final weights.
