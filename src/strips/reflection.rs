@@ -87,19 +87,20 @@ pub fn fitted_rulings(points: &[Vec3], targets: &[Option<Vec3>]) -> Option<Vec<V
     let tangent = (edges[start - 1] + edges[start]).try_normalize(1e-12)?;
     let across = normals[start]?.cross(&tangent);
     let maps = propagation(points, start);
-    // The member of angle φ has rulings cos φ A_i + sin φ B_i.
-    let (a, b): (Vec<Vec3>, Vec<Vec3>) = maps.iter().map(|m| (m * tangent, m * across)).unzip();
+    // The member of angle φ has rulings d_i = cos φ A_i + sin φ B_i; its misfit at vertex i,
+    // 1 − (d_i·t_i)²/‖d_i‖², needs only the dot products of A_i, B_i and t_i, taken once here
+    // for the few hundred angles tried.
+    let terms: Vec<MisfitTerms> = maps.iter().zip(targets).map(|(m, t)| MisfitTerms::new(&(m * tangent), &(m * across), t.as_ref())).collect();
     let misfit = |phi: f64| -> f64 {
         let (sin, cos) = phi.sin_cos();
         let mut total = 0.0;
-        for ((a, b), t) in a.iter().zip(&b).zip(targets) {
-            let d = a * cos + b * sin;
-            let length = d.norm_squared();
-            if length <= 1e-24 * (a.norm_squared() + b.norm_squared()) {
+        for term in &terms {
+            let length = cos * cos * term.aa + 2.0 * cos * sin * term.ab + sin * sin * term.bb;
+            if length <= 1e-24 * (term.aa + term.bb) {
                 return f64::INFINITY;
             }
-            if let Some(t) = t {
-                total += 1.0 - d.dot(t).powi(2) / length;
+            if let Some([at, bt]) = term.target {
+                total += 1.0 - (cos * at + sin * bt).powi(2) / length;
             }
         }
         total
@@ -122,6 +123,21 @@ pub fn fitted_rulings(points: &[Vec3], targets: &[Option<Vec3>]) -> Option<Vec<V
     let refined = 0.5 * (low + high);
     let phi = if misfit(refined) <= misfit(best) { refined } else { best };
     rulings_of(&maps, &(tangent * phi.cos() + across * phi.sin()), start)
+}
+
+/// The dot products the misfit of [`fitted_rulings`] needs at one vertex, from its rulings `a`
+/// (member φ = 0) and `b` (φ = 90°) and its target `t`: `a·a`, `a·b`, `b·b` and `(a·t, b·t)`.
+struct MisfitTerms {
+    aa: f64,
+    ab: f64,
+    bb: f64,
+    target: Option<[f64; 2]>,
+}
+
+impl MisfitTerms {
+    fn new(a: &Vec3, b: &Vec3, target: Option<&Vec3>) -> MisfitTerms {
+        MisfitTerms { aa: a.norm_squared(), ab: a.dot(b), bb: b.norm_squared(), target: target.map(|t| [a.dot(t), b.dot(t)]) }
+    }
 }
 
 #[cfg(test)]
