@@ -272,9 +272,7 @@ fn samples_lie_behind_a_curved_facade_on_one_side_everywhere() {
     // mean sun of 9 h to 16 h (south-south-west) lies behind the tangent planes of its
     // east-facing part, yet the samples there must lie inside the wall like all the others, or
     // the east part would be judged from outside the building.
-    let wall = cylinder_patch(&CylinderPatch { radius: 10.0, span: std::f64::consts::FRAC_PI_2, height: 6.0, target_vertices: 600, irregularity: 0.3, seed: 5 }).unwrap();
-    let positions = wall.positions.iter().map(|p| Vec3::new(p.y, -p.x, p.z)).collect();
-    let mesh = TriMesh::from_vertices_and_faces(positions, wall.faces).unwrap();
+    let mesh = curved_wall(600);
     let suns = sun_samples(&site((6, 14, 6, 28), (9.0, 16.0)), 2, 1.0).unwrap();
     let mean_sun: Vec3 = suns.iter().map(|s| s.direction).sum();
     let outward = |p: &Vec3| Vec3::new(p.x, p.y, 0.0).normalize();
@@ -330,8 +328,8 @@ fn a_mixed_curved_wall_keeps_each_regions_behaviour_and_turns_smoothly_through_t
     assert!(median < 2.0, "the pass region's rectifying planes miss the morning sun by {median:.2}° (median)");
 
     // The sun-path check, with strips as `lamella shade` builds them (20 curves, as wide as apart).
+    let levels = lamella::curves::uniform_levels(&mesh, &field, 20).unwrap();
     let spacing = {
-        let levels = lamella::curves::uniform_levels(&mesh, &field, 20).unwrap();
         let gradient_norm = |f: usize| mesh.faces()[f].iter().zip(mesh.face_gradients(f)).map(|(&v, g)| g * field[v as usize]).sum::<Vec3>().norm();
         let gradient = (0..mesh.face_count()).map(|f| mesh.face_areas()[f] * gradient_norm(f)).sum::<f64>() / mesh.face_areas().iter().sum::<f64>();
         (levels[1] - levels[0]) / gradient
@@ -344,7 +342,6 @@ fn a_mixed_curved_wall_keeps_each_regions_behaviour_and_turns_smoothly_through_t
 
     // The transition: the level curves (resampled every two mean edges) turn through the free ring
     // no faster than in either region, and no point of them kinks.
-    let levels = lamella::curves::uniform_levels(&mesh, &field, 20).unwrap();
     let curves = lamella::curves::resample_all(&lamella::curves::extract_level_curves(&mesh, &field, &levels).unwrap(), 2.0 * mesh.mean_edge_length()).unwrap();
     let bvh = lamella::mesh::FaceBvh::new(&mesh);
     let mut turning = std::collections::HashMap::<VertexLabel, f64>::new();
