@@ -136,15 +136,20 @@ impl StartKind {
     }
 }
 
-/// The search, stepped one candidate at a time (each step runs one short solve).
+/// The search, stepped one candidate at a time. A step that runs a short solve runs the next
+/// candidate's beside it, on a second solver (two probes side by side use the machine's two
+/// cores better than one probe's passes split between them), and the next step only records
+/// that candidate. Each probe is the same whichever solver runs it, so candidates, scores and
+/// the winner do not depend on it.
 pub struct StartSearch {
     mesh: TriMesh,
     /// The coarsening of `mesh` the candidates are probed on, when `mesh` is large.
     proxy: Option<TriMesh>,
     params: FieldParams,
     options: SearchOptions,
-    /// One solver restarted for every candidate, so the problem is prepared once.
-    solver: Option<FieldSolver>,
+    /// Two solvers restarted for every candidate, so the problem is prepared twice at most: the
+    /// current candidate's probe runs on the first, the next candidate's beside it on the second.
+    solvers: [Option<FieldSolver>; 2],
     pending: VecDeque<Pending>,
     candidates: Vec<Candidate>,
     /// The best candidate so far: its index and its field after the short solve.
@@ -158,12 +163,27 @@ pub struct StartSearch {
     crossing: Option<(Vec<f64>, f64)>,
 }
 
-/// A candidate not probed yet: its kind, initial field and `E_grad` target.
+/// A candidate not recorded yet: its kind, initial field and `E_grad` target, and its probe
+/// when it ran beside the previous candidate's.
 struct Pending {
     kind: StartKind,
     field: Result<Vec<f64>, String>,
     gradient_target: Option<f64>,
+    /// `field` has been checked by [`StartSearch::reject_straight_start`].
+    screened: bool,
+    probed: Option<Probed>,
 }
+
+impl Pending {
+    fn new(kind: StartKind, field: Result<Vec<f64>, String>, gradient_target: Option<f64>) -> Pending {
+        Pending { kind, field, gradient_target, screened: false, probed: None }
+    }
+}
+
+/// How a probe ended: `Err` for a failure no other candidate could avoid (an invalid parameter),
+/// `Ok(Err(reason))` for a rejected candidate, else the family measure of the level curves its
+/// short solve reached, its singular vertex count and its field.
+type Probed = Result<Result<(FamilyAngles, usize, Vec<f64>), String>, FieldError>;
 
 impl StartSearch {
     /// Prepares the search for a field of `params` (its family, weights and schedule; its
@@ -186,7 +206,7 @@ impl StartSearch {
             proxy: search_proxy(mesh, options.proxy_vertices),
             params,
             options,
-            solver: None,
+            solvers: [None, None],
             pending: VecDeque::new(),
             candidates: Vec::new(),
             best: None,
@@ -205,7 +225,8 @@ impl StartSearch {
         if self.pending.is_empty() && !self.guides_queued && !self.has_acceptable() {
             self.queue_guides();
         }
-        let Some(next) = self.pending.pop_front() else { return Ok(false) };
+        let Some(mut next) = self.pending.pop_front() else { return Ok(false) };
+        self.screen(&mut next);
         let index = self.candidates.len();
         let mut candidate = Candidate {
             kind: next.kind,
@@ -216,10 +237,9 @@ impl StartSearch {
             singular_vertices: 0,
             rejected: None,
         };
-        let field = next.field.and_then(|field| self.reject_straight_start(&field).map_or(Ok(field), Err));
-        match field {
+        match next.field {
             Err(reason) => candidate.rejected = Some(reason),
-            Ok(field) => match self.probe(&field, next.gradient_target)? {
+            Ok(field) => match next.probed.unwrap_or_else(|| self.probe_beside_next(&field, next.gradient_target))? {
                 Err(reason) => candidate.rejected = Some(reason),
                 Ok((measure, singular, probed)) => {
                     candidate.rms_error_degrees = measure.rms_error_degrees;
@@ -322,7 +342,7 @@ impl StartSearch {
             return FieldSolver::new(&self.mesh, &field, params).map_err(SearchError::Field);
         }
         let field = probed;
-        let mut solver = match self.solver.take() {
+        let mut solver = match self.solvers.iter_mut().find_map(Option::take) {
             Some(solver) => solver,
             None => FieldSolver::new(&self.mesh, &field, params.clone()).map_err(SearchError::Field)?,
         };
@@ -352,7 +372,7 @@ impl StartSearch {
             for &negated in signs {
                 let sign = if negated { -1.0 } else { 1.0 };
                 let field = self.probed_mesh().positions().iter().map(|p| sign * p.dot(&d)).collect();
-                self.pending.push_back(Pending { kind: StartKind::Height { direction: [d.x, d.y, d.z], negated }, field: Ok(field), gradient_target: None });
+                self.pending.push_back(Pending::new(StartKind::Height { direction: [d.x, d.y, d.z], negated }, Ok(field), None));
             }
         }
     }
@@ -371,43 +391,52 @@ impl StartSearch {
             .map(|&(side, start_angle)| {
                 let kind = StartKind::Guides { side, start_angle_degrees: start_angle };
                 match guide_field(&basis, mesh, self.options.guides, side, start_angle, theta) {
-                    Ok((field, target)) => Pending { kind, field: Ok(field), gradient_target: Some(target) },
-                    Err(reason) => Pending { kind, field: Err(reason), gradient_target: None },
+                    Ok((field, target)) => Pending::new(kind, Ok(field), Some(target)),
+                    Err(reason) => Pending::new(kind, Err(reason), None),
                 }
             })
             .collect();
         self.pending.extend(queued);
     }
 
-    /// Runs the short solve from `field` and measures where it ends: `Ok(Err(reason))` rejects
-    /// the candidate.
-    #[allow(clippy::type_complexity)]
-    fn probe(&mut self, field: &[f64], gradient_target: Option<f64>) -> Result<Result<(FamilyAngles, usize, Vec<f64>), String>, FieldError> {
-        let mut params = self.params.clone();
-        params.gradient_target = gradient_target;
-        for stage in &mut params.schedule {
-            stage.iterations = stage.iterations.min(self.options.probe_warm_up);
+    /// The probe of the current candidate from `field`, with the next pending candidate's (if it
+    /// needs one) run beside it on the second solver and kept for the next step.
+    fn probe_beside_next(&mut self, field: &[f64], gradient_target: Option<f64>) -> Probed {
+        let mut next = self.pending.pop_front();
+        if let Some(next) = next.as_mut() {
+            self.screen(next);
         }
-        params.schedule.retain(|stage| stage.iterations > 0);
-        let restarted = if let Some(solver) = self.solver.as_mut() {
-            solver.restart(field, params)
-        } else {
-            FieldSolver::new(self.probed_mesh(), field, params).map(|solver| self.solver = Some(solver))
+        let mesh = self.proxy.as_ref().unwrap_or(&self.mesh);
+        let (params, options) = (&self.params, &self.options);
+        let [first, second] = &mut self.solvers;
+        let current = match next.as_mut().filter(|next| next.probed.is_none()) {
+            Some(Pending { field: Ok(next_field), gradient_target: next_target, probed, .. }) => {
+                let (current, beside) = rayon::join(
+                    || probe(first, mesh, params, options, field, gradient_target),
+                    || probe(second, mesh, params, options, next_field, *next_target),
+                );
+                *probed = Some(beside);
+                current
+            }
+            _ => probe(first, mesh, params, options, field, gradient_target),
         };
-        if let Err(error) = restarted {
-            return match error {
-                FieldError::InvalidParameter { .. } => Err(error),
-                other => Ok(Err(format!("cannot start: {other}"))),
-            };
+        if let Some(next) = next {
+            self.pending.push_front(next);
         }
-        // Invariant: set just above.
-        let solver = self.solver.as_mut().expect("solver prepared");
-        let report = match solver.step(self.options.probe_iterations) {
-            Ok(report) => report,
-            Err(error) => return Ok(Err(format!("short solve failed: {error}"))),
-        };
-        let probed = solver.field();
-        Ok(self.measure(&probed).map(|measure| (measure, report.singular_vertices.len(), probed)))
+        current
+    }
+
+    /// Rejects `pending`'s start, once, when its level curves are straight to begin with
+    /// ([`Self::reject_straight_start`]).
+    fn screen(&self, pending: &mut Pending) {
+        if !pending.screened {
+            pending.screened = true;
+            if let Ok(field) = &pending.field {
+                if let Some(reason) = self.reject_straight_start(field) {
+                    pending.field = Err(reason);
+                }
+            }
+        }
     }
 
     /// A pseudo-geodesic start whose level curves are already nearly all straight (the rulings of
@@ -427,6 +456,36 @@ impl StartSearch {
     fn measure(&self, field: &[f64]) -> Result<FamilyAngles, String> {
         level_curve_measure(self.probed_mesh(), field, self.params.family, &self.options)
     }
+}
+
+/// Runs the short solve of a candidate from `field` on `mesh` (on the solver in `solver`, restarted, or
+/// a new one there) and measures where it ends.
+fn probe(solver: &mut Option<FieldSolver>, mesh: &TriMesh, params: &FieldParams, options: &SearchOptions, field: &[f64], gradient_target: Option<f64>) -> Probed {
+    let mut params = params.clone();
+    params.gradient_target = gradient_target;
+    for stage in &mut params.schedule {
+        stage.iterations = stage.iterations.min(options.probe_warm_up);
+    }
+    params.schedule.retain(|stage| stage.iterations > 0);
+    let family = params.family;
+    let restarted = match solver.as_mut() {
+        Some(solver) => solver.restart(field, params),
+        None => FieldSolver::new(mesh, field, params).map(|new| *solver = Some(new)),
+    };
+    if let Err(error) = restarted {
+        return match error {
+            FieldError::InvalidParameter { .. } => Err(error),
+            other => Ok(Err(format!("cannot start: {other}"))),
+        };
+    }
+    // Invariant: set just above.
+    let solver = solver.as_mut().expect("solver prepared");
+    let report = match solver.step(options.probe_iterations) {
+        Ok(report) => report,
+        Err(error) => return Ok(Err(format!("short solve failed: {error}"))),
+    };
+    let probed = solver.field();
+    Ok(level_curve_measure(mesh, &probed, family, options).map(|measure| (measure, report.singular_vertices.len(), probed)))
 }
 
 /// Keeps candidate `index` with its `score` and probed fields in `slot` when the slot is empty or

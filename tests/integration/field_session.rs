@@ -32,6 +32,24 @@ fn a_restored_session_continues_bit_for_bit() {
     assert!(ba.iter().zip(&bb).all(|(x, y)| x == y));
 }
 
+/// The start search probes its candidates on two solvers, each restarted for its next
+/// candidate: a candidate's probe must not depend on which solver ran it, or on what it ran before.
+#[test]
+fn a_restarted_solver_solves_as_a_new_one_does() {
+    let mesh = cylinder(400, 3);
+    let other: Vec<f64> = mesh.positions().iter().map(|p| p.x + 0.3 * p.z).collect();
+    let mut params = FieldParams::pseudo_geodesic(60.0);
+    params.gradient_target = Some(1.5);
+    let mut restarted = started_solver();
+    restarted.restart(&other, params.clone()).expect("restarts");
+    let mut new = FieldSolver::new(&mesh, &other, params).expect("valid input");
+    assert_eq!(restarted.report(), new.report());
+    let (a, b) = (restarted.step(15).expect("solver runs"), new.step(15).expect("solver runs"));
+    assert_eq!(a, b);
+    assert_eq!(bits(&restarted.field()), bits(&new.field()));
+    assert!(a.angle_error_max_degrees < 90.0 && a.iterations == 15, "the restarted solve did not run: {a:?}");
+}
+
 #[test]
 fn truncated_data_is_reported_not_trusted() {
     let bytes = started_solver().to_bytes();
