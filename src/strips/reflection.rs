@@ -91,22 +91,21 @@ pub fn fitted_rulings(points: &[Vec3], targets: &[Option<Vec3>]) -> Option<Vec<V
     // 1 − (d_i·t_i)²/‖d_i‖², needs only the dot products of A_i, B_i and t_i, taken once here
     // for the few hundred angles tried.
     let terms: Vec<MisfitTerms> = maps.iter().zip(targets).map(|(m, t)| MisfitTerms::new(&(m * tangent), &(m * across), t.as_ref())).collect();
-    let misfit = |phi: f64| -> f64 {
-        let (sin, cos) = phi.sin_cos();
-        let mut total = 0.0;
-        for term in &terms {
-            let length = cos * cos * term.aa + 2.0 * cos * sin * term.ab + sin * sin * term.bb;
-            if length <= 1e-24 * (term.aa + term.bb) {
-                return f64::INFINITY;
-            }
-            if let Some([at, bt]) = term.target {
-                total += 1.0 - (cos * at + sin * bt).powi(2) / length;
+    let misfit = |phis: [f64; 2]| misfits(&terms, phis.map(f64::sin_cos));
+    // The samples in lanes of four (each lane sums its vertices in order, as one sample alone
+    // would); the last lanes repeat the last sample.
+    let step = std::f64::consts::PI / SAMPLES as f64;
+    let angles = sample_angles();
+    let mut best = (f64::NAN, f64::INFINITY);
+    for lanes in angles.chunks(LANES) {
+        let values: [f64; LANES] = misfits(&terms, std::array::from_fn(|l| lanes[l.min(lanes.len() - 1)].1));
+        for (&(phi, _), value) in lanes.iter().zip(values) {
+            if value < best.1 {
+                best = (phi, value);
             }
         }
-        total
-    };
-    let step = std::f64::consts::PI / SAMPLES as f64;
-    let (best, _) = (1..SAMPLES).map(|s| (s as f64 * step, misfit(s as f64 * step))).fold((f64::NAN, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
+    }
+    let (best, best_misfit) = best;
     if best.is_nan() {
         return None;
     }
@@ -114,15 +113,49 @@ pub fn fitted_rulings(points: &[Vec3], targets: &[Option<Vec3>]) -> Option<Vec<V
     let ratio = 0.5 * (5f64.sqrt() - 1.0);
     for _ in 0..REFINEMENTS {
         let (x, y) = (high - ratio * (high - low), low + ratio * (high - low));
-        if misfit(x) < misfit(y) {
+        let [at_x, at_y] = misfit([x, y]);
+        if at_x < at_y {
             high = y;
         } else {
             low = x;
         }
     }
     let refined = 0.5 * (low + high);
-    let phi = if misfit(refined) <= misfit(best) { refined } else { best };
+    let phi = if misfits(&terms, [refined.sin_cos()])[0] <= best_misfit { refined } else { best };
     rulings_of(&maps, &(tangent * phi.cos() + across * phi.sin()), start)
+}
+
+/// Samples evaluated side by side in [`fitted_rulings`]' scan.
+const LANES: usize = 4;
+
+/// The sampled angles `s π / SAMPLES` (s = 1 … SAMPLES − 1) with their sines and cosines,
+/// computed once.
+fn sample_angles() -> &'static [(f64, (f64, f64))] {
+    static ANGLES: std::sync::OnceLock<Vec<(f64, (f64, f64))>> = std::sync::OnceLock::new();
+    ANGLES.get_or_init(|| {
+        let step = std::f64::consts::PI / SAMPLES as f64;
+        (1..SAMPLES).map(|s| s as f64 * step).map(|phi| (phi, phi.sin_cos())).collect()
+    })
+}
+
+/// The misfit of [`fitted_rulings`] of the members at the angles of `(sin, cos)` pairs, each
+/// lane summed over the vertices in order: `Σ_i 1 − (d_i·t_i)²/‖d_i‖²` over the vertices with a
+/// target, +∞ where some ruling vanishes.
+fn misfits<const L: usize>(terms: &[MisfitTerms], angles: [(f64, f64); L]) -> [f64; L] {
+    let mut totals = [0.0; L];
+    let mut vanishing = [false; L];
+    for term in terms {
+        let floor = 1e-24 * (term.aa + term.bb);
+        for l in 0..L {
+            let (sin, cos) = angles[l];
+            let length = cos * cos * term.aa + 2.0 * cos * sin * term.ab + sin * sin * term.bb;
+            vanishing[l] |= length <= floor;
+            if let Some([at, bt]) = term.target {
+                totals[l] += 1.0 - (cos * at + sin * bt).powi(2) / length;
+            }
+        }
+    }
+    std::array::from_fn(|l| if vanishing[l] { f64::INFINITY } else { totals[l] })
 }
 
 /// The dot products the misfit of [`fitted_rulings`] needs at one vertex, from its rulings `a`
