@@ -53,6 +53,10 @@ pub struct BaseMeshReport {
 
 /// The measures of a net (caller units) against its reference.
 pub(crate) struct Measures {
+    /// The net's vertices as measured, and the reference's closest point, smooth normal and
+    /// distance for each ([`Reference::closest`]).
+    pub positions: Vec<Vec3>,
+    pub closest: Vec<(Vec3, Vec3, f64)>,
     pub families: Vec<FamilyAngles>,
     pub deviation: Deviation,
     pub rulings: PolylineRulings,
@@ -139,7 +143,16 @@ impl Reference {
         deviation.max_percent = 100.0 * deviation.max / self.diagonal;
         let rulings = polyline_rulings(net);
         let (nodes, node_torsion) = node_rulings(net, &rulings);
-        Measures { families: family_angles, deviation, rulings, nodes, node_torsion }
+        Measures { positions: net.positions().to_vec(), closest, families: family_angles, deviation, rulings, nodes, node_torsion }
+    }
+}
+
+impl Measures {
+    /// [`Reference::closest`] of `p` as measured here, if `p` is vertex `v` as measured (bit for
+    /// bit): the next iteration's anchors start where the last report measured.
+    pub fn closest_as_measured(&self, v: usize, p: &Vec3) -> Option<(Vec3, Vec3, f64)> {
+        let measured = self.positions.get(v)?;
+        measured.iter().zip(p.iter()).all(|(a, b)| a.to_bits() == b.to_bits()).then(|| self.closest[v])
     }
 }
 

@@ -105,7 +105,7 @@ impl BaseMeshSolver {
         while ran < max_iterations && !self.converged {
             let vertices = self.problem.net().vertex_count();
             let points = self.x[..3 * vertices].par_chunks_exact(3).map(|p| Vec3::new(p[0], p[1], p[2]));
-            self.problem.anchors = anchors(&self.reference, points, self.scale, &mut self.held);
+            self.problem.anchors = anchors(&self.reference, points, self.scale, &mut self.held, Some(&self.measures));
             let outcome = self.lm.iterate(&self.problem, &mut self.x)?;
             ran += 1;
             self.iterations += 1;
@@ -282,18 +282,21 @@ pub(super) fn assemble(
     held: &mut [bool],
 ) -> Result<(BaseMeshProblem, LevenbergMarquardt), BaseMeshError> {
     let curves: Vec<CurveRows> = (0..params.families.len()).map(|k| CurveRows::new(params.families[k], targets_degrees[k])).collect();
-    let anchors = anchors(reference, net.positions().par_iter().copied(), scale, held);
+    let anchors = anchors(reference, net.positions().par_iter().copied(), scale, held, None);
     let problem = BaseMeshProblem::new(net, curves, torsion_free, params.weights, anchors);
     let lm = LevenbergMarquardt::new(&problem, params.lm.clone())?;
     Ok((problem, lm))
 }
 
 /// The reference's closest point and normal for every one of the scaled net's `points` (in
-/// parallel, deterministic); vertices past the reference's boundary are marked in `held` for good.
-fn anchors(reference: &Reference, points: impl IndexedParallelIterator<Item = Vec3>, scale: f64, held: &mut [bool]) -> Vec<Anchor> {
+/// parallel, deterministic), taken from `measured` where a vertex has not moved since; vertices
+/// past the reference's boundary are marked in `held` for good.
+fn anchors(reference: &Reference, points: impl IndexedParallelIterator<Item = Vec3>, scale: f64, held: &mut [bool], measured: Option<&Measures>) -> Vec<Anchor> {
     let mut anchors: Vec<Anchor> = points
-        .map(|p| {
-            let (point, normal, _) = reference.closest(&(p / scale));
+        .enumerate()
+        .map(|(v, p)| {
+            let query = p / scale;
+            let (point, normal, _) = measured.and_then(|m| m.closest_as_measured(v, &query)).unwrap_or_else(|| reference.closest(&query));
             let point = point * scale;
             let offset = p - point;
             let along = offset.dot(&normal);
