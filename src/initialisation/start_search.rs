@@ -163,20 +163,19 @@ pub struct StartSearch {
     crossing: Option<(Vec<f64>, f64)>,
 }
 
-/// A candidate not recorded yet: its kind, initial field and `E_grad` target, and its probe
-/// when it ran beside the previous candidate's.
+/// A candidate not recorded yet: its kind, initial field (or why it has none, a straight start
+/// included: [`StartSearch::screened`]) and `E_grad` target, and its probe when it ran beside the
+/// previous candidate's.
 struct Pending {
     kind: StartKind,
     field: Result<Vec<f64>, String>,
     gradient_target: Option<f64>,
-    /// `field` has been checked by [`StartSearch::reject_straight_start`].
-    screened: bool,
     probed: Option<Probed>,
 }
 
 impl Pending {
     fn new(kind: StartKind, field: Result<Vec<f64>, String>, gradient_target: Option<f64>) -> Pending {
-        Pending { kind, field, gradient_target, screened: false, probed: None }
+        Pending { kind, field, gradient_target, probed: None }
     }
 }
 
@@ -225,8 +224,7 @@ impl StartSearch {
         if self.pending.is_empty() && !self.guides_queued && !self.has_acceptable() {
             self.queue_guides();
         }
-        let Some(mut next) = self.pending.pop_front() else { return Ok(false) };
-        self.screen(&mut next);
+        let Some(next) = self.pending.pop_front() else { return Ok(false) };
         let index = self.candidates.len();
         let mut candidate = Candidate {
             kind: next.kind,
@@ -372,7 +370,7 @@ impl StartSearch {
             for &negated in signs {
                 let sign = if negated { -1.0 } else { 1.0 };
                 let field = self.probed_mesh().positions().iter().map(|p| sign * p.dot(&d)).collect();
-                self.pending.push_back(Pending::new(StartKind::Height { direction: [d.x, d.y, d.z], negated }, Ok(field), None));
+                self.pending.push_back(Pending::new(StartKind::Height { direction: [d.x, d.y, d.z], negated }, self.screened(field), None));
             }
         }
     }
@@ -391,7 +389,7 @@ impl StartSearch {
             .map(|&(side, start_angle)| {
                 let kind = StartKind::Guides { side, start_angle_degrees: start_angle };
                 match guide_field(&basis, mesh, self.options.guides, side, start_angle, theta) {
-                    Ok((field, target)) => Pending::new(kind, Ok(field), Some(target)),
+                    Ok((field, target)) => Pending::new(kind, self.screened(field), Some(target)),
                     Err(reason) => Pending::new(kind, Err(reason), None),
                 }
             })
@@ -403,13 +401,10 @@ impl StartSearch {
     /// needs one) run beside it on the second solver and kept for the next step.
     fn probe_beside_next(&mut self, field: &[f64], gradient_target: Option<f64>) -> Probed {
         let mut next = self.pending.pop_front();
-        if let Some(next) = next.as_mut() {
-            self.screen(next);
-        }
         let mesh = self.proxy.as_ref().unwrap_or(&self.mesh);
         let (params, options) = (&self.params, &self.options);
         let [first, second] = &mut self.solvers;
-        let current = match next.as_mut().filter(|next| next.probed.is_none()) {
+        let current = match next.as_mut() {
             Some(Pending { field: Ok(next_field), gradient_target: next_target, probed, .. }) => {
                 let (current, beside) = rayon::join(
                     || probe(first, mesh, params, options, field, gradient_target),
@@ -426,17 +421,9 @@ impl StartSearch {
         current
     }
 
-    /// Rejects `pending`'s start, once, when its level curves are straight to begin with
-    /// ([`Self::reject_straight_start`]).
-    fn screen(&self, pending: &mut Pending) {
-        if !pending.screened {
-            pending.screened = true;
-            if let Ok(field) = &pending.field {
-                if let Some(reason) = self.reject_straight_start(field) {
-                    pending.field = Err(reason);
-                }
-            }
-        }
+    /// `field`, or why its start is rejected unsolved ([`Self::reject_straight_start`]).
+    fn screened(&self, field: Vec<f64>) -> Result<Vec<f64>, String> {
+        self.reject_straight_start(&field).map_or(Ok(field), Err)
     }
 
     /// A pseudo-geodesic start whose level curves are already nearly all straight (the rulings of
@@ -458,8 +445,8 @@ impl StartSearch {
     }
 }
 
-/// Runs the short solve of a candidate from `field` on `mesh` (on the solver in `solver`, restarted, or
-/// a new one there) and measures where it ends.
+/// Runs the short solve of a candidate from `field` on `mesh` (on the solver in `solver`,
+/// restarted, or a new one there) and measures where it ends.
 fn probe(solver: &mut Option<FieldSolver>, mesh: &TriMesh, params: &FieldParams, options: &SearchOptions, field: &[f64], gradient_target: Option<f64>) -> Probed {
     let mut params = params.clone();
     params.gradient_target = gradient_target;

@@ -93,7 +93,7 @@ namespace Lamella.Hosting
 
         /// <summary>
         /// Steps within a time budget. While the start search runs, one budget slice probes one candidate (about 20 field
-        /// iterations) and stops with <see cref="SteppingStop.TimeBudget"/>; the slice that probes the last candidate also
+        /// iterations, or almost none when its short solve ran beside the one before) and stops with <see cref="SteppingStop.TimeBudget"/>; the slice that probes the last candidate also
         /// takes the best one's field, which later slices step (see <see cref="FieldStepping.StepWithin"/>). An infinite
         /// budget runs the whole search and then the field. The search's iterations do not count against
         /// <paramref name="iterationCap"/>. A restored session saved converged reports <see cref="SteppingStop.Converged"/>
