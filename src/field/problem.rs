@@ -26,7 +26,7 @@ use super::{asymptotic, constant_slope, geodesic, gradient_norm, pseudo_geodesic
 use super::level_jet::{JetStencil, JetStencils};
 use super::level_jet::LevelJet;
 use crate::mesh::{TriMesh, Vec3};
-use crate::solver::{LeastSquaresProblem, VariableLayout};
+use crate::solver::{new_revision, LeastSquaresProblem, VariableLayout};
 
 /// Which energy a block belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -52,6 +52,9 @@ pub struct FieldProblem {
     /// replacing `target`.
     vertex_targets: Option<Vec<TargetAngle>>,
     weights: Weights,
+    /// The revision of the weights the constant Jacobians (fairness and fit blocks) scale with
+    /// ([`LeastSquaresProblem::constant_jacobian_revision`]).
+    revision: u64,
     gradient_target: f64,
     /// The vertices that carry a curve term, in increasing order.
     curve_vertices: Vec<u32>,
@@ -103,6 +106,7 @@ impl FieldProblem {
             vertex_targets: None,
             family,
             weights,
+            revision: new_revision(),
             gradient_target,
             curve_vertices,
             jets,
@@ -195,6 +199,7 @@ impl FieldProblem {
 
     pub fn set_weights(&mut self, weights: Weights) {
         self.weights = weights;
+        self.revision = new_revision();
     }
 
     /// The vertices that carry a curve term (those whose local fits are well posed), in
@@ -244,7 +249,8 @@ impl FieldProblem {
         self.mesh.vertex_count() + self.mesh.face_count()
     }
 
-    /// Evaluates block `b` with the given weights (the solver uses the problem's own; reports use 1).
+    /// Evaluates block `b` with the given weights (the solver uses the problem's own; reports use 1)
+    /// into `residuals` and `jacobian`, which come in zeroed.
     pub(crate) fn evaluate_weighted(&self, b: usize, weights: &Weights, x: &[f64], residuals: &mut [f64], jacobian: Option<&mut [f64]>) {
         match self.block(b) {
             Block::Fair(v) => {
@@ -273,12 +279,8 @@ impl FieldProblem {
             Block::Curve(k) => {
                 let v = self.curve_vertices[k] as usize;
                 let scale = (weights.angle * self.mesh.normalized_vertex_areas()[v]).sqrt();
-                residuals.fill(0.0);
-                let mut jacobian = jacobian;
-                if let Some(j) = jacobian.as_deref_mut() {
-                    j.fill(0.0);
-                }
-                // Singular vertices keep zero rows.
+                // Singular vertices keep the zero rows every caller hands in (the contract of
+                // `LeastSquaresProblem::evaluate_block`).
                 let Some(jet) = self.level_jet(k, x) else { return };
                 let stencil = self.jets.get(k);
                 match self.family {
@@ -330,6 +332,16 @@ impl LeastSquaresProblem for FieldProblem {
 
     fn evaluate_block(&self, b: usize, x: &[f64], residuals: &mut [f64], jacobian: Option<&mut [f64]>) {
         self.evaluate_weighted(b, &self.weights, x, residuals, jacobian);
+    }
+
+    /// The Hessian-fairness rows (Eq. 6) and the `E_fit` rows are linear in the field values,
+    /// with coefficients fixed by the mesh and `λ_fair`.
+    fn block_jacobian_is_constant(&self, b: usize) -> bool {
+        matches!(self.block(b), Block::Fair(_) | Block::Fit(_))
+    }
+
+    fn constant_jacobian_revision(&self) -> u64 {
+        self.revision
     }
 
     fn variable_layout(&self) -> VariableLayout {

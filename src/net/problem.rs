@@ -184,6 +184,20 @@ impl LeastSquaresProblem for NetProblem {
         }
     }
 
+    /// The fields' own constant blocks (fairness and fit rows); Eq. 18's row scales with the
+    /// third family's growing weight, so it is evaluated every time.
+    fn block_jacobian_is_constant(&self, b: usize) -> bool {
+        match self.locate(b) {
+            Block::Field(k, local) => self.fields[k].block_jacobian_is_constant(local),
+            Block::Intersection(..) | Block::Web(_) => false,
+        }
+    }
+
+    /// The latest of the fields' revisions: every field's change takes a new, larger one.
+    fn constant_jacobian_revision(&self) -> u64 {
+        self.fields.iter().map(LeastSquaresProblem::constant_jacobian_revision).max().unwrap_or(0)
+    }
+
     fn variable_layout(&self) -> VariableLayout {
         let sizes: Vec<usize> = self
             .fields

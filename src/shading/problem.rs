@@ -172,6 +172,14 @@ impl LeastSquaresProblem for ShadingProblem {
         }
     }
 
+    fn block_jacobian_is_constant(&self, b: usize) -> bool {
+        b < self.regulariser_blocks() && self.field.block_jacobian_is_constant(self.field_block(b))
+    }
+
+    fn constant_jacobian_revision(&self) -> u64 {
+        self.field.constant_jacobian_revision()
+    }
+
     fn variable_layout(&self) -> VariableLayout {
         let n = self.mesh().vertex_count();
         let sizes: Vec<usize> = self.light_vertices.iter().map(|v| auxiliaries(v.mode)).collect();

@@ -17,19 +17,30 @@ pub(crate) fn sum_in_block_order(norms: impl Iterator<Item = f64>) -> f64 {
     norms.fold(0.0, |acc, v| acc + v)
 }
 
-/// Evaluates every block at `x` into its slot. Errors name the lowest non-finite block.
+/// Evaluates every block at `x` into its slot. With `reuse_constant`, the blocks whose Jacobian
+/// is constant ([`LeastSquaresProblem::block_jacobian_is_constant`]) keep the Jacobian and Gram
+/// already in their slots (evaluated at the same revision) and only their residuals and Jᵀr are
+/// evaluated; the slots hold the same values, bit for bit, as a full evaluation would write.
+/// Errors name the lowest non-finite block.
 pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
     problem: &P,
     structure: &BlockStructure,
     x: &[f64],
     slots: &mut [f64],
+    reuse_constant: bool,
 ) -> Result<(), SolverError> {
     let failed = try_for_each_segment(slots, &structure.slot_ptr, &|b, slot| {
         let s = structure.split_slot(b, slot);
         s.residuals.fill(0.0);
-        s.jacobian.fill(0.0);
-        problem.evaluate_block(b, x, s.residuals, Some(s.jacobian));
-        if !s.residuals.iter().chain(s.jacobian.iter()).all(|v| v.is_finite()) {
+        let reused = reuse_constant && problem.block_jacobian_is_constant(b);
+        if reused {
+            problem.evaluate_block(b, x, s.residuals, None);
+        } else {
+            s.jacobian.fill(0.0);
+            problem.evaluate_block(b, x, s.residuals, Some(s.jacobian));
+        }
+        // A reused Jacobian was checked when it was evaluated.
+        if !(s.residuals.iter().all(|v| v.is_finite()) && (reused || s.jacobian.iter().all(|v| v.is_finite()))) {
             return false;
         }
         let n = s.gradient.len();
@@ -41,9 +52,11 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
         // without a local group have a Gram part, and all their variables are global, so its
         // columns are the row's own entries in order.
         s.gradient.fill(0.0);
-        s.gram.fill(0.0);
-        let with_gram = !s.gram.is_empty();
-        debug_assert!(!with_gram || structure.global_positions(b).iter().enumerate().all(|(i, &p)| p as usize == i));
+        let with_gram = !reused && !s.gram.is_empty();
+        if with_gram {
+            s.gram.fill(0.0);
+        }
+        debug_assert!(s.gram.is_empty() || structure.global_positions(b).iter().enumerate().all(|(i, &p)| p as usize == i));
         for (row, &rv) in s.jacobian.chunks_exact(n).zip(s.residuals.iter()) {
             for (ga, &j) in s.gradient.iter_mut().zip(row) {
                 *ga += j * rv;

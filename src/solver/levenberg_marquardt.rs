@@ -43,6 +43,9 @@ pub struct LevenbergMarquardt {
     trial_x: Vec<f64>,
     mu: Option<f64>,
     nu: f64,
+    /// The problem's constant-Jacobian revision whose Jacobians and Gram products the slots of
+    /// the constant blocks hold (`None` before the first evaluation or after a failed one).
+    constant_revision: Option<u64>,
 }
 
 impl LevenbergMarquardt {
@@ -80,6 +83,7 @@ impl LevenbergMarquardt {
             trial_x: vec![0.0; n],
             mu: None,
             nu: 2.0,
+            constant_revision: None,
             blocks,
             groups,
             pattern,
@@ -125,7 +129,9 @@ impl LevenbergMarquardt {
 
     /// One Levenberg–Marquardt iteration at x (x updated in place only if a step is accepted).
     ///
-    /// Evaluates residuals and Jacobians at x, solves (JᵀJ + μI) h = −Jᵀr (Schur-reduced), and
+    /// Evaluates residuals and Jacobians at x (the Jacobians of constant blocks once per revision
+    /// of the problem, see [`LeastSquaresProblem::block_jacobian_is_constant`]), solves
+    /// (JᵀJ + μI) h = −Jᵀr (Schur-reduced), and
     /// accepts h when the gain ratio ρ = (E(x) − E(x+h)) / (L(0) − L(h)) is positive, with
     /// L(0) − L(h) = hᵀ(μh − Jᵀr) for E = ‖r‖². Accepted: μ ← μ·max(1/3, 1 − (2ρ − 1)³), ν ← 2;
     /// rejected (including failed factorisations and non-finite trial energies): μ ← μν, ν ← 2ν,
@@ -142,7 +148,12 @@ impl LevenbergMarquardt {
     fn iterate_here<P: LeastSquaresProblem>(&mut self, problem: &P, x: &mut [f64]) -> Result<IterationOutcome, SolverError> {
         self.check_unchanged(problem, x)?;
         self.accepted = false;
-        evaluate_slots(problem, &self.blocks, x, &mut self.slots)?;
+        // The constant blocks' Jacobians and Grams are evaluated once per revision.
+        let revision = problem.constant_jacobian_revision();
+        let reuse_constant = self.constant_revision == Some(revision);
+        self.constant_revision = None;
+        evaluate_slots(problem, &self.blocks, x, &mut self.slots, reuse_constant)?;
+        self.constant_revision = Some(revision);
         // The serial reduction of the block slots runs while the other threads accumulate the
         // groups (which read the slots only). With μ already known, each group is eliminated for
         // the first trial right after its accumulation, while its workspace is still in cache.

@@ -27,4 +27,4 @@ pub use layout::VariableLayout;
 pub use levenberg_marquardt::{DampingState, LevenbergMarquardt};
 pub use options::LmOptions;
 pub use outcome::{Convergence, IterationOutcome};
-pub use problem::LeastSquaresProblem;
+pub use problem::{new_revision, LeastSquaresProblem};

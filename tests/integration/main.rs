@@ -68,6 +68,7 @@ mod reshape_cylinder;
 
 mod shading;
 
+mod solver_constant_jacobians;
 mod solver_errors;
 mod solver_jacobian_check;
 mod solver_lm;
