@@ -4,31 +4,78 @@
 use rayon::prelude::*;
 
 use super::evaluation::{squared_norm, sum_in_block_order};
-use super::normal_pattern::NormalPattern;
+use super::normal_pattern::{check_positions, NormalPattern};
+use super::packed_upper::add_outer_product;
 use super::schur::GroupSystems;
-use super::structure::{BlockStructure, GroupStructure};
+use super::structure::{triangle_len, BlockStructure, GroupStructure};
+use super::SolverError;
+
+/// The share of H_GG = J_GᵀJ_G of the blocks without a local group whose Jacobian is constant
+/// ([`super::LeastSquaresProblem::block_jacobian_is_constant`]): summed once per revision of the
+/// problem's constant Jacobians, straight from their Jacobians, instead of every iteration (and
+/// not kept per block).
+pub(crate) struct ConstantHessian {
+    values: Vec<f64>,
+    /// One block's packed Gram product.
+    gram: Vec<f64>,
+}
+
+impl ConstantHessian {
+    pub fn new(pattern: &NormalPattern) -> Self {
+        Self { values: vec![0.0; pattern.storage_len()], gram: Vec::new() }
+    }
+
+    /// Sums the Gram products J_bᵀJ_b of the constant blocks without a local group from the
+    /// Jacobians in their slots, each accumulated row by row as [`super::evaluation`] does for
+    /// the other blocks, in block order.
+    pub fn refresh(&mut self, structure: &BlockStructure, pattern: &NormalPattern, slots: &[f64]) {
+        self.values.fill(0.0);
+        for b in (0..structure.block_count()).filter(|&b| structure.constant_jacobian[b] && structure.group[b].is_none()) {
+            let slot = structure.slot(b, slots);
+            let n = slot.gradient.len();
+            if n == 0 {
+                continue;
+            }
+            self.gram.clear();
+            self.gram.resize(triangle_len(n), 0.0);
+            for row in slot.jacobian.chunks_exact(n) {
+                add_outer_product(row, &mut self.gram);
+            }
+            add_gram(pattern, b, &self.gram, &mut self.values);
+        }
+    }
+}
+
+/// Adds block `b`'s packed Gram product `gram` to the values of H_GG.
+fn add_gram(pattern: &NormalPattern, b: usize, gram: &[f64], hessian: &mut [f64]) {
+    let targets = &pattern.gram_targets[pattern.gram_ptr[b]..pattern.gram_ptr[b + 1]];
+    for (&t, &value) in targets.iter().zip(gram) {
+        hessian[t as usize] += value;
+    }
+}
 
 /// Sums the block slots in block order: returns E(x), and writes the full gradient g = Jᵀr and
 /// the values of H_GG = J_GᵀJ_G of the blocks without a local group on the normal pattern (the
-/// groups' blocks add theirs through [`GroupSystem::schur`]).
+/// groups' blocks add theirs through [`GroupSystems`]): the constant blocks' share
+/// `constant_hessian` (summed by [`ConstantHessian::refresh`]) plus the other blocks' Gram
+/// products in block order.
 pub(crate) fn reduce_blocks(
     structure: &BlockStructure,
     pattern: &NormalPattern,
     slots: &[f64],
+    constant_hessian: &ConstantHessian,
     gradient: &mut [f64],
     hessian: &mut [f64],
 ) -> f64 {
     gradient.fill(0.0);
-    hessian.fill(0.0);
+    hessian.copy_from_slice(&constant_hessian.values);
     let norms = (0..structure.block_count()).map(|b| {
         let slot = structure.slot(b, slots);
         for (&v, &ga) in structure.variables(b).iter().zip(slot.gradient.iter()) {
             gradient[v as usize] += ga;
         }
-        let targets = &pattern.gram_targets[pattern.gram_ptr[b]..pattern.gram_ptr[b + 1]];
-        for (&t, &value) in targets.iter().zip(slot.gram.iter()) {
-            hessian[t] += value;
-        }
+        // Constant blocks' slots hold no Gram part (nothing to add).
+        add_gram(pattern, b, slot.gram, hessian);
         squared_norm(slot.residuals)
     });
     sum_in_block_order(norms)
@@ -43,34 +90,38 @@ pub(crate) struct ReducedGather {
     /// `schur_sources[schur_ptr[t]..schur_ptr[t + 1]]`: the W − G_L entries landing on value
     /// position t.
     schur_ptr: Vec<usize>,
-    schur_sources: Vec<usize>,
+    schur_sources: Vec<u32>,
     /// `rhs_sources[rhs_ptr[v]..rhs_ptr[v + 1]]`: the v_L entries of global variable v.
     rhs_ptr: Vec<usize>,
-    rhs_sources: Vec<usize>,
+    rhs_sources: Vec<u32>,
 }
 
 impl ReducedGather {
-    pub fn new(pattern: &NormalPattern, groups: &GroupStructure, systems: &GroupSystems) -> Self {
+    /// Takes the pattern's Schur targets (nothing else reads them).
+    /// Errors: `InvalidLayout` when the group systems' buffer is beyond 32-bit positions.
+    pub fn new(pattern: &mut NormalPattern, groups: &GroupStructure, systems: &GroupSystems) -> Result<Self, SolverError> {
+        check_positions(systems.buffer().len())?;
+        // Positions in the buffer fit 32 bits (checked above).
+        let from = |start: usize| (start..).map(|p| p as u32);
+        let (target_ptr, targets) = pattern.take_schur_targets();
         let group_count = groups.group_count();
         let (schur_ptr, schur_sources) = transpose(
             pattern.storage_len(),
             (0..group_count).flat_map(|l| {
-                let targets = &pattern.schur_targets[pattern.schur_ptr[l]..pattern.schur_ptr[l + 1]];
-                targets.iter().copied().zip(systems.schur_start(groups, l)..)
+                let targets = &targets[target_ptr[l]..target_ptr[l + 1]];
+                targets.iter().map(|&t| t as usize).zip(from(systems.schur_start(groups, l)))
             }),
         );
         let (rhs_ptr, rhs_sources) = transpose(
             pattern.dimension(),
-            (0..group_count).flat_map(|l| {
-                groups.globals(l).iter().map(|&v| v as usize).zip(systems.schur_rhs_start(groups, l)..)
-            }),
+            (0..group_count).flat_map(|l| groups.globals(l).iter().map(|&v| v as usize).zip(from(systems.schur_rhs_start(groups, l)))),
         );
-        Self { schur_ptr, schur_sources, rhs_ptr, rhs_sources }
+        Ok(Self { schur_ptr, schur_sources, rhs_ptr, rhs_sources })
     }
 }
 
 /// CSR lists of the `(key, item)` pairs grouped by key (< `n`), each list in input order.
-fn transpose(n: usize, pairs: impl Iterator<Item = (usize, usize)> + Clone) -> (Vec<usize>, Vec<usize>) {
+fn transpose(n: usize, pairs: impl Iterator<Item = (usize, u32)> + Clone) -> (Vec<usize>, Vec<u32>) {
     let mut ptr = vec![0usize; n + 1];
     for (key, _) in pairs.clone() {
         ptr[key + 1] += 1;
@@ -114,7 +165,7 @@ impl ReducedSystem<'_> {
                     s += self.mu * share;
                 }
                 for &source in &gather.schur_sources[gather.schur_ptr[t]..gather.schur_ptr[t + 1]] {
-                    s -= terms[source];
+                    s -= terms[source as usize];
                 }
                 *value = s;
             }
@@ -130,7 +181,7 @@ impl ReducedSystem<'_> {
                 let v = c * CHUNK + i;
                 let mut s = -self.gradient[v];
                 for &source in &gather.rhs_sources[gather.rhs_ptr[v]..gather.rhs_ptr[v + 1]] {
-                    s += terms[source];
+                    s += terms[source as usize];
                 }
                 *r = s;
             }

@@ -18,9 +18,11 @@ pub(crate) fn sum_in_block_order(norms: impl Iterator<Item = f64>) -> f64 {
 }
 
 /// Evaluates every block at `x` into its slot. With `reuse_constant`, the blocks whose Jacobian
-/// is constant ([`LeastSquaresProblem::block_jacobian_is_constant`]) keep the Jacobian and Gram
-/// already in their slots (evaluated at the same revision) and only their residuals and Jᵀr are
+/// is constant ([`LeastSquaresProblem::block_jacobian_is_constant`]) keep the Jacobian already
+/// in their slots (evaluated at the same revision) and only their residuals and Jᵀr are
 /// evaluated; the slots hold the same values, bit for bit, as a full evaluation would write.
+/// (Those blocks' Gram products are not kept in the slots: see
+/// [`super::assembly::ConstantHessian`].)
 /// Errors name the lowest non-finite block.
 pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
     problem: &P,
@@ -32,7 +34,7 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
     let failed = try_for_each_segment(slots, &structure.slot_ptr, &|b, slot| {
         let s = structure.split_slot(b, slot);
         s.residuals.fill(0.0);
-        let reused = reuse_constant && problem.block_jacobian_is_constant(b);
+        let reused = reuse_constant && structure.constant_jacobian[b];
         if reused {
             problem.evaluate_block(b, x, s.residuals, None);
         } else {
@@ -49,10 +51,10 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
         }
         // Jᵀr and the upper Gram of the global columns (in the order of the pattern's gram
         // targets), accumulated row by row; structurally zero entries are skipped. Only blocks
-        // without a local group have a Gram part, and all their variables are global, so its
-        // columns are the row's own entries in order.
+        // without a local group and with a varying Jacobian have a Gram part, and all their
+        // variables are global, so its columns are the row's own entries in order.
         s.gradient.fill(0.0);
-        let with_gram = !reused && !s.gram.is_empty();
+        let with_gram = !s.gram.is_empty();
         if with_gram {
             s.gram.fill(0.0);
         }

@@ -2,7 +2,7 @@
 //! D = I) on the sparse normal equations, with Schur elimination of local variable groups.
 //! Used for the level-set field optimisation of the paper (Sec. 3.2.2, Eq. 8–12).
 
-use super::assembly::{reduce_blocks, ReducedGather, ReducedSystem};
+use super::assembly::{reduce_blocks, ConstantHessian, ReducedGather, ReducedSystem};
 use super::evaluation::{evaluate_energy_into, evaluate_energy_standalone, evaluate_slots};
 use super::normal_pattern::NormalPattern;
 use super::schur::GroupSystems;
@@ -37,6 +37,8 @@ pub struct LevenbergMarquardt {
     accepted: bool,
     gradient: Vec<f64>,
     hessian: Vec<f64>,
+    /// The constant blocks' share of `hessian`, summed at `constant_revision`.
+    constant_hessian: ConstantHessian,
     /// diag(JᵀJ) over the global variables (scratch of [`Self::initial_damping`]).
     global_diagonal: Vec<f64>,
     step: Vec<f64>,
@@ -55,7 +57,7 @@ impl LevenbergMarquardt {
     /// ordering) once.
     pub fn new<P: LeastSquaresProblem>(problem: &P, options: LmOptions) -> Result<Self, SolverError> {
         let (blocks, groups) = analyse(problem)?;
-        let mut pattern = NormalPattern::build(&blocks, &groups);
+        let mut pattern = NormalPattern::build(&blocks, &groups)?;
         let cholesky = if pattern.dimension() > 0 {
             let cholesky = SubstructuredCholesky::analyse(&pattern.col_ptr, &pattern.row_idx)?;
             // The reduced matrix is assembled directly in the factorisations' storage order.
@@ -66,7 +68,8 @@ impl LevenbergMarquardt {
             None
         };
         let systems = GroupSystems::new(&groups);
-        let gather = ReducedGather::new(&pattern, &groups, &systems);
+        let constant_hessian = ConstantHessian::new(&pattern);
+        let gather = ReducedGather::new(&mut pattern, &groups, &systems)?;
         let n = blocks.variable_count;
         let nnz = pattern.storage_len();
         Ok(Self {
@@ -78,6 +81,7 @@ impl LevenbergMarquardt {
             accepted: false,
             gradient: vec![0.0; n],
             hessian: vec![0.0; nnz],
+            constant_hessian,
             global_diagonal: vec![0.0; blocks.global_count],
             step: vec![0.0; n],
             trial_x: vec![0.0; n],
@@ -153,6 +157,9 @@ impl LevenbergMarquardt {
         let reuse_constant = self.constant_revision == Some(revision);
         self.constant_revision = None;
         evaluate_slots(problem, &self.blocks, x, &mut self.slots, reuse_constant)?;
+        if !reuse_constant {
+            self.constant_hessian.refresh(&self.blocks, &self.pattern, &self.slots);
+        }
         self.constant_revision = Some(revision);
         // The serial reduction of the block slots runs while the other threads accumulate the
         // groups (which read the slots only). With μ already known, each group is eliminated for
@@ -161,8 +168,9 @@ impl LevenbergMarquardt {
         let (energy, eliminated) = {
             let (blocks, groups, pattern, slots) = (&self.blocks, &self.groups, &self.pattern, &self.slots);
             let (gradient, hessian, systems) = (&mut self.gradient, &mut self.hessian, &mut self.systems);
+            let constant_hessian = &self.constant_hessian;
             rayon::join(
-                || reduce_blocks(blocks, pattern, slots, gradient, hessian),
+                || reduce_blocks(blocks, pattern, slots, constant_hessian, gradient, hessian),
                 || systems.accumulate(blocks, groups, slots, known_mu),
             )
         };
@@ -315,6 +323,7 @@ impl LevenbergMarquardt {
         for b in 0..self.blocks.block_count() {
             if problem.block_residual_count(b) != self.blocks.residual_count(b)
                 || problem.block_variables(b) != self.blocks.variables(b)
+                || problem.block_jacobian_is_constant(b) != self.blocks.constant_jacobian[b]
             {
                 return changed(format!("structure of block {b} changed"));
             }

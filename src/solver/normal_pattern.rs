@@ -19,15 +19,17 @@ pub(crate) struct NormalPattern {
     /// without a local group (none for the others),
     /// in the order of its Gram slot, the value position in S.
     pub gram_ptr: Vec<usize>,
-    pub gram_targets: Vec<usize>,
+    pub gram_targets: Vec<u32>,
     /// `schur_targets[schur_ptr[l]..]`: for each upper pair (i ≤ j) of group l's sorted globals, the
-    /// value position in S.
-    pub schur_ptr: Vec<usize>,
-    pub schur_targets: Vec<usize>,
+    /// value position in S. Handed to [`super::assembly::ReducedGather`] by
+    /// [`Self::take_schur_targets`], which is all that reads them.
+    schur_ptr: Vec<usize>,
+    schur_targets: Vec<u32>,
 }
 
 impl NormalPattern {
-    pub fn build(blocks: &BlockStructure, groups: &GroupStructure) -> Self {
+    /// Errors: `InvalidLayout` when the pattern has more entries than 32-bit positions reach.
+    pub fn build(blocks: &BlockStructure, groups: &GroupStructure) -> Result<Self, SolverError> {
         let g = blocks.global_count;
         // Cliques: sorted global variable sets whose squares make up the pattern.
         let mut clique_ptr = vec![0];
@@ -48,6 +50,7 @@ impl NormalPattern {
             }
         }
         let (col_ptr, row_idx) = upper_pattern(g, &clique_ptr, &clique_vars);
+        check_positions(row_idx.len())?;
         let mut pattern = Self {
             diagonal: Vec::new(),
             damping_share: Vec::new(),
@@ -78,14 +81,21 @@ impl NormalPattern {
             pattern.schur_ptr.push(entries.len() - gram_end);
         }
         let mut targets = pattern.positions(&entries);
-        pattern.schur_targets = targets.split_off(gram_end);
-        pattern.gram_targets = targets.split_off(g);
+        // Positions are below the entry count, checked to fit 32 bits above.
+        let narrow = |targets: Vec<usize>| targets.into_iter().map(|t| t as u32).collect();
+        pattern.schur_targets = narrow(targets.split_off(gram_end));
+        pattern.gram_targets = narrow(targets.split_off(g));
         pattern.diagonal = targets.into_iter().enumerate().map(|(v, t)| (v as u32, t)).collect();
         pattern.damping_share = vec![0.0; pattern.row_idx.len()];
         for &(_, t) in &pattern.diagonal {
             pattern.damping_share[t] = 1.0;
         }
-        pattern
+        Ok(pattern)
+    }
+
+    /// The groups' Schur targets (see the field), moved out: `(schur_ptr, schur_targets)`.
+    pub fn take_schur_targets(&mut self) -> (Vec<usize>, Vec<u32>) {
+        (std::mem::take(&mut self.schur_ptr), std::mem::take(&mut self.schur_targets))
     }
 
     /// Moves the values into the storage of the domain matrices (see
@@ -102,12 +112,16 @@ impl NormalPattern {
     ) -> Result<(), SolverError> {
         // Local variables (beyond `domain_of`) have no domain.
         let domain = |vars: &[u32]| vars.iter().find_map(|&v| domain_of.get(v as usize).copied().flatten()).unwrap_or(0);
-        let relocate = |targets: &mut [usize], d: usize| -> Result<(), SolverError> {
+        let storage_len = storage.iter().flatten().filter(|&&p| p != usize::MAX).count();
+        check_positions(storage_len)?;
+        let relocate = |targets: &mut [u32], d: usize| -> Result<(), SolverError> {
             for t in targets {
-                *t = storage[d][*t];
-                if *t == usize::MAX {
+                let position = storage[d][*t as usize];
+                if position == usize::MAX {
                     return Err(SolverError::SymbolicAnalysisFailed { message: "a block couples two domains".to_string() });
                 }
+                // Below `storage_len`, checked above.
+                *t = position as u32;
             }
             Ok(())
         };
@@ -119,7 +133,6 @@ impl NormalPattern {
             let d = domain(groups.globals(l));
             relocate(&mut self.schur_targets[self.schur_ptr[l]..self.schur_ptr[l + 1]], d)?;
         }
-        let storage_len = storage.iter().flatten().filter(|&&p| p != usize::MAX).count();
         self.damping_share = vec![0.0; storage_len];
         let mut diagonal = Vec::with_capacity(self.diagonal.len());
         for &(v, t) in &self.diagonal {
@@ -176,6 +189,15 @@ impl NormalPattern {
         }
         positions
     }
+}
+
+/// Value positions are stored as 32 bits (half the memory of the scatter maps): `count` of them
+/// must fit.
+pub(crate) fn check_positions(count: usize) -> Result<(), SolverError> {
+    if count > u32::MAX as usize {
+        return Err(SolverError::InvalidLayout { message: format!("{count} normal-matrix entries exceed the u32 index range") });
+    }
+    Ok(())
 }
 
 /// Upper-triangular CSC pattern (sorted rows) of the union of the squared cliques and the diagonal.

@@ -14,7 +14,8 @@ pub(crate) struct BlockStructure {
     /// `slot_ptr[b]..slot_ptr[b+1]`: block `b`'s evaluation slot, laid out as
     /// [residuals m | Jacobian m×n row-major | Jᵀr n | upper-triangular Gram of global columns].
     /// Blocks of a local group have no Gram part: their J_GᵀJ_G is summed per group (see
-    /// [`super::schur::GroupSystem`]).
+    /// [`super::schur::GroupSystems`]); nor have blocks with a constant Jacobian: theirs is summed
+    /// once per revision straight into H_GG (see [`super::assembly::ConstantHessian`]).
     pub slot_ptr: Vec<usize>,
     /// Positions (within the block's variable list) of its global variables.
     pub global_ptr: Vec<usize>,
@@ -29,6 +30,9 @@ pub(crate) struct BlockStructure {
     pub local_offsets: Vec<u32>,
     /// The local group touched by each block.
     pub group: Vec<Option<u32>>,
+    /// Whether each block's Jacobian is constant
+    /// ([`LeastSquaresProblem::block_jacobian_is_constant`]).
+    pub constant_jacobian: Vec<bool>,
 }
 
 /// Local-group structure (CSR-like flat arrays indexed by group).
@@ -161,6 +165,7 @@ pub(crate) fn analyse<P: LeastSquaresProblem>(problem: &P) -> Result<(BlockStruc
         local_positions: Vec::new(),
         local_offsets: Vec::new(),
         group: Vec::with_capacity(block_count),
+        constant_jacobian: Vec::with_capacity(block_count),
     };
     let mut seen = vec![usize::MAX; n];
     let mut group_block_count = vec![0usize; group_count];
@@ -194,10 +199,9 @@ pub(crate) fn analyse<P: LeastSquaresProblem>(problem: &P) -> Result<(BlockStruc
             }
         }
         let too_large = || invalid(b, "block too large".to_string());
-        let slot_len = m
-            .checked_mul(vars.len())
-            .and_then(|mn| mn.checked_add(m + vars.len() + if group.is_none() { triangle_len(global_count) } else { 0 }))
-            .ok_or_else(too_large)?;
+        let constant = problem.block_jacobian_is_constant(b);
+        let gram_len = if group.is_none() && !constant { triangle_len(global_count) } else { 0 };
+        let slot_len = m.checked_mul(vars.len()).and_then(|mn| mn.checked_add(m + vars.len() + gram_len)).ok_or_else(too_large)?;
         let last_slot = s.slot_ptr[b];
         s.slot_ptr.push(last_slot.checked_add(slot_len).ok_or_else(too_large)?);
         s.variables.extend_from_slice(vars);
@@ -209,6 +213,7 @@ pub(crate) fn analyse<P: LeastSquaresProblem>(problem: &P) -> Result<(BlockStruc
             group_block_count[l] += 1;
         }
         s.group.push(group.map(|l| l as u32));
+        s.constant_jacobian.push(constant);
     }
     s.coupling_index = vec![0; s.global_positions.len()];
 
