@@ -63,6 +63,7 @@ pub(crate) fn reduce_blocks(
     structure: &BlockStructure,
     pattern: &NormalPattern,
     slots: &[f64],
+    systems: &GroupSystems,
     constant_hessian: &ConstantHessian,
     gradient: &mut [f64],
     hessian: &mut [f64],
@@ -70,13 +71,19 @@ pub(crate) fn reduce_blocks(
     gradient.fill(0.0);
     hessian.copy_from_slice(&constant_hessian.values);
     let norms = (0..structure.block_count()).map(|b| {
-        let slot = structure.slot(b, slots);
-        for (&v, &ga) in structure.variables(b).iter().zip(slot.gradient.iter()) {
+        let (residuals, block_gradient) = match structure.group[b] {
+            Some(_) => systems.block_products(structure, b),
+            None => {
+                let slot = structure.slot(b, slots);
+                // Constant blocks' slots hold no Gram part (nothing to add).
+                add_gram(pattern, b, slot.gram, hessian);
+                (slot.residuals, slot.gradient)
+            }
+        };
+        for (&v, &ga) in structure.variables(b).iter().zip(block_gradient) {
             gradient[v as usize] += ga;
         }
-        // Constant blocks' slots hold no Gram part (nothing to add).
-        add_gram(pattern, b, slot.gram, hessian);
-        squared_norm(slot.residuals)
+        squared_norm(residuals)
     });
     sum_in_block_order(norms)
 }

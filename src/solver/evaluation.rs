@@ -1,5 +1,6 @@
 //! Parallel evaluation of the residual blocks: at x with Jacobians into per-block slots (plus
 //! each block's Jᵀr and Gram products of its global columns), and at trial points without them.
+//! (The blocks of local groups are evaluated at x by [`super::schur::GroupSystems`].)
 use rayon::prelude::*;
 
 use super::packed_upper::add_outer_product;
@@ -17,7 +18,7 @@ pub(crate) fn sum_in_block_order(norms: impl Iterator<Item = f64>) -> f64 {
     norms.fold(0.0, |acc, v| acc + v)
 }
 
-/// Evaluates every block at `x` into its slot. With `reuse_constant`, the blocks whose Jacobian
+/// Evaluates every block without a local group at `x` into its slot. With `reuse_constant`, the blocks whose Jacobian
 /// is constant ([`LeastSquaresProblem::block_jacobian_is_constant`]) keep the Jacobian already
 /// in their slots (evaluated at the same revision) and only their residuals and Jᵀr are
 /// evaluated; the slots hold the same values, bit for bit, as a full evaluation would write.
@@ -32,6 +33,9 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
     reuse_constant: bool,
 ) -> Result<(), SolverError> {
     let failed = try_for_each_segment(slots, &structure.slot_ptr, &|b, slot| {
+        if structure.group[b].is_some() {
+            return true;
+        }
         let s = structure.split_slot(b, slot);
         s.residuals.fill(0.0);
         let reused = reuse_constant && structure.constant_jacobian[b];

@@ -67,7 +67,7 @@ impl LevenbergMarquardt {
         } else {
             None
         };
-        let systems = GroupSystems::new(&groups);
+        let systems = GroupSystems::new(&blocks, &groups);
         let constant_hessian = ConstantHessian::new(&pattern);
         let gather = ReducedGather::new(&mut pattern, &groups, &systems)?;
         let n = blocks.variable_count;
@@ -156,24 +156,33 @@ impl LevenbergMarquardt {
         let revision = problem.constant_jacobian_revision();
         let reuse_constant = self.constant_revision == Some(revision);
         self.constant_revision = None;
-        evaluate_slots(problem, &self.blocks, x, &mut self.slots, reuse_constant)?;
+        // The blocks without a group are evaluated into their slots while the groups' blocks are
+        // evaluated into their group systems and accumulated there. With μ already known, each
+        // group is eliminated for the first trial right after its accumulation, while its
+        // workspace is still in cache.
+        let known_mu = self.mu;
+        let (evaluated, eliminated) = {
+            let (blocks, groups, slots, systems) = (&self.blocks, &self.groups, &mut self.slots, &mut self.systems);
+            let x = &*x;
+            rayon::join(
+                || evaluate_slots(problem, blocks, x, slots, reuse_constant),
+                || systems.accumulate(problem, x, blocks, groups, known_mu),
+            )
+        };
+        let eliminated = lowest_block_error(evaluated, eliminated)?;
         if !reuse_constant {
             self.constant_hessian.refresh(&self.blocks, &self.pattern, &self.slots);
         }
         self.constant_revision = Some(revision);
-        // The serial reduction of the block slots runs while the other threads accumulate the
-        // groups (which read the slots only). With μ already known, each group is eliminated for
-        // the first trial right after its accumulation, while its workspace is still in cache.
-        let known_mu = self.mu;
-        let (energy, eliminated) = {
-            let (blocks, groups, pattern, slots) = (&self.blocks, &self.groups, &self.pattern, &self.slots);
-            let (gradient, hessian, systems) = (&mut self.gradient, &mut self.hessian, &mut self.systems);
-            let constant_hessian = &self.constant_hessian;
-            rayon::join(
-                || reduce_blocks(blocks, pattern, slots, constant_hessian, gradient, hessian),
-                || systems.accumulate(blocks, groups, slots, known_mu),
-            )
-        };
+        let energy = reduce_blocks(
+            &self.blocks,
+            &self.pattern,
+            &self.slots,
+            &self.systems,
+            &self.constant_hessian,
+            &mut self.gradient,
+            &mut self.hessian,
+        );
         let mut first_elimination = known_mu.map(|mu| (mu, eliminated));
         let gradient_norm_inf = self.gradient.iter().fold(0.0, |m: f64, g| m.max(g.abs()));
         let mu = match self.mu {
@@ -205,7 +214,7 @@ impl LevenbergMarquardt {
             outcome.trials += 1;
             let mu = self.damping();
             let eliminated = first_elimination.take().filter(|&(known, _)| known == mu).map(|(_, ok)| ok);
-            if self.solve_damped(mu, eliminated) {
+            if self.solve_damped(problem, x, mu, eliminated) {
                 factorised_once = true;
                 outcome.step_norm = self.step.iter().map(|h| h * h).sum::<f64>().sqrt();
                 let eps2 = self.options.step_tolerance;
@@ -278,10 +287,10 @@ impl LevenbergMarquardt {
     /// Solves the damped normal equations for the step h (into `self.step`). `eliminated` is the
     /// outcome of the group eliminations if they were already done for this μ. Returns `false` if
     /// a factorisation fails or the step is not finite.
-    fn solve_damped(&mut self, mu: f64, eliminated: Option<bool>) -> bool {
+    fn solve_damped<P: LeastSquaresProblem>(&mut self, problem: &P, x: &[f64], mu: f64, eliminated: Option<bool>) -> bool {
         let eliminated = match eliminated {
             Some(ok) => ok,
-            None => self.systems.eliminate(&self.blocks, &self.groups, &self.slots, mu),
+            None => self.systems.eliminate(problem, x, &self.blocks, &self.groups, mu),
         };
         if !eliminated {
             return false;
@@ -329,5 +338,20 @@ impl LevenbergMarquardt {
             }
         }
         Ok(())
+    }
+}
+
+/// The evaluation's outcome from its two parts (the blocks without a group, and the groups'
+/// blocks with their accumulation): the error of the lower block if both fail, so that errors
+/// name the lowest non-finite block.
+fn lowest_block_error(slots: Result<(), SolverError>, groups: Result<bool, SolverError>) -> Result<bool, SolverError> {
+    let block = |error: &SolverError| match error {
+        SolverError::NonFiniteResidual { block } | SolverError::NonFiniteJacobian { block } => *block,
+        _ => usize::MAX,
+    };
+    match (slots, groups) {
+        (Ok(()), groups) => groups,
+        (Err(error), Ok(_)) => Err(error),
+        (Err(a), Err(b)) => Err(if block(&b) < block(&a) { b } else { a }),
     }
 }

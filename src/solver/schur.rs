@@ -13,15 +13,24 @@
 //! sections of one segment per group, all segments in one buffer (so that the reduced system
 //! can gather the Schur terms by flat positions). The elimination works in place (L over D_L,
 //! [Z | z] over [C_L | g_L], W − G_L over G_L), which halves the memory every pass streams
-//! through; a trial with another μ (after a rejected step) accumulates again from the block
-//! slots, which stay valid for the whole iteration.
+//! through.
+//!
+//! The group's blocks are evaluated right where they are accumulated: each block's Jacobian
+//! lives only in a per-thread scratch while its rows are summed into the group system, and only
+//! its residuals and Jᵀr are kept (in the group's segment, for the energy and the gradient). A
+//! trial with another μ (after a rejected step) evaluates and accumulates the group again at the
+//! same x.
 //!
 //! The global Gram G_L = J_GᵀJ_G of the group's blocks is summed here too (from the same
 //! Jacobian rows) rather than scattered into H_GG block by block: the group hands S the single
 //! packed term W − G_L on its Schur targets, which cover every global pair of its blocks.
+use std::cell::Cell;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
 use super::packed_upper::add_outer_product;
 use super::segments::try_for_each_segment;
 use super::structure::{triangle_len, BlockStructure, GroupStructure};
+use super::{LeastSquaresProblem, SolverError};
 
 /// Dense workspaces of all local groups (group l: k local variables, q coupled global
 /// variables), sized once, one segment per group in one buffer.
@@ -29,14 +38,24 @@ use super::structure::{triangle_len, BlockStructure, GroupStructure};
 /// A segment holds, in this order: D_L, after elimination its Cholesky factor L (k×k, lower
 /// triangle used); [C_L | g_L], after elimination [Z | z] (k×(q+1)); G_L, after elimination
 /// W − G_L (upper triangle of q×q packed row by row, the order of the pattern's Schur targets);
-/// v (q); and the dense local and global entries of the Jacobian row being accumulated (k + q).
-/// All row-major.
+/// v (q); the dense local and global entries of the Jacobian row being accumulated (k + q); and
+/// the residuals and Jᵀr of each of the group's blocks, in block order (m + n each). All
+/// row-major.
 pub(crate) struct GroupSystems {
     /// `buffer[segment_ptr[l]..segment_ptr[l + 1]]`: the segment of group l.
     segment_ptr: Vec<usize>,
     buffer: Vec<f64>,
     /// Whether the segments hold accumulated, not yet eliminated systems.
     accumulated: bool,
+    /// Position in `buffer` of each block's residuals, followed by its Jᵀr (blocks of a local
+    /// group only; 0 for the others).
+    product_start: Vec<usize>,
+}
+
+thread_local! {
+    /// The Jacobian of the block being accumulated on this thread (taken while in use, so that
+    /// a nested use would get a fresh one rather than a conflict).
+    static JACOBIAN: Cell<Vec<f64>> = const { Cell::new(Vec::new()) };
 }
 
 /// Mutable views of a group's segment.
@@ -66,21 +85,24 @@ const COUPLING: usize = 1;
 const GRAM: usize = 2;
 const SCHUR_RHS: usize = 3;
 
-fn sections(k: usize, q: usize, segment: &mut [f64]) -> Sections<'_> {
-    let [normal, coupling, gram, schur_rhs, row_locals, _] = section_lengths(k, q);
+/// The sections of a segment, and the rest of it: its blocks' residuals and Jᵀr.
+fn sections(k: usize, q: usize, segment: &mut [f64]) -> (Sections<'_>, &mut [f64]) {
+    let [normal, coupling, gram, schur_rhs, row_locals, row_globals] = section_lengths(k, q);
     let (normal_part, rest) = segment.split_at_mut(normal);
     let (coupling_part, rest) = rest.split_at_mut(coupling);
     let (gram_part, rest) = rest.split_at_mut(gram);
     let (schur_rhs_part, rest) = rest.split_at_mut(schur_rhs);
-    let (row_locals_part, row_globals_part) = rest.split_at_mut(row_locals);
-    Sections {
+    let (row_locals_part, rest) = rest.split_at_mut(row_locals);
+    let (row_globals_part, products) = rest.split_at_mut(row_globals);
+    let sections = Sections {
         normal: normal_part,
         coupling: coupling_part,
         gram: gram_part,
         schur_rhs: schur_rhs_part,
         row_locals: row_locals_part,
         row_globals: row_globals_part,
-    }
+    };
+    (sections, products)
 }
 
 /// k and q of group l.
@@ -89,15 +111,30 @@ fn dimensions(groups: &GroupStructure, l: usize) -> (usize, usize) {
 }
 
 impl GroupSystems {
-    pub fn new(groups: &GroupStructure) -> Self {
+    pub fn new(blocks: &BlockStructure, groups: &GroupStructure) -> Self {
         let mut segment_ptr = Vec::with_capacity(groups.group_count() + 1);
         segment_ptr.push(0);
+        let mut product_start = vec![0; blocks.block_count()];
         for l in 0..groups.group_count() {
             let (k, q) = dimensions(groups, l);
-            segment_ptr.push(segment_ptr[l] + section_lengths(k, q).iter().sum::<usize>());
+            let mut end = segment_ptr[l] + section_lengths(k, q).iter().sum::<usize>();
+            for &b in groups.blocks(l) {
+                let b = b as usize;
+                product_start[b] = end;
+                end += blocks.residual_count(b) + blocks.variables(b).len();
+            }
+            segment_ptr.push(end);
         }
         let len = segment_ptr[groups.group_count()];
-        Self { segment_ptr, buffer: vec![0.0; len], accumulated: false }
+        Self { segment_ptr, buffer: vec![0.0; len], accumulated: false, product_start }
+    }
+
+    /// The residuals and Jᵀr of block `b` of a local group at the x of the last accumulation.
+    pub fn block_products(&self, blocks: &BlockStructure, b: usize) -> (&[f64], &[f64]) {
+        let start = self.product_start[b];
+        let m = blocks.residual_count(b);
+        let n = blocks.variables(b).len();
+        self.buffer[start..start + m + n].split_at(m)
     }
 
     /// The whole buffer (for gathers by [`Self::schur_start`] and [`Self::schur_rhs_start`]).
@@ -136,32 +173,62 @@ impl GroupSystems {
         })
     }
 
-    /// Accumulates every group's D_L, C_L, G_L and g_L from its blocks' slots (in parallel) and,
-    /// if `mu` is given, eliminates it right away while its segment is in cache. Returns `false`
-    /// if an elimination fails.
-    pub fn accumulate(&mut self, blocks: &BlockStructure, groups: &GroupStructure, slots: &[f64], mu: Option<f64>) -> bool {
+    /// Evaluates every group's blocks at `x` and accumulates its D_L, C_L, G_L and g_L from them
+    /// (in parallel), and, if `mu` is given, eliminates it right away while its segment is in
+    /// cache. Returns `Ok(false)` if an elimination fails; errors name the lowest block of a
+    /// group whose residuals or Jacobian are not finite.
+    pub fn accumulate<P: LeastSquaresProblem>(
+        &mut self,
+        problem: &P,
+        x: &[f64],
+        blocks: &BlockStructure,
+        groups: &GroupStructure,
+        mu: Option<f64>,
+    ) -> Result<bool, SolverError> {
         self.accumulated = mu.is_none();
+        // 2b for block b's residuals, 2b + 1 for its Jacobian: the lowest over all groups.
+        let non_finite = AtomicUsize::new(usize::MAX);
         let failed = try_for_each_segment(&mut self.buffer, &self.segment_ptr, &|l, segment| {
             let (k, q) = dimensions(groups, l);
-            let mut s = sections(k, q, segment);
-            accumulate_kernel(k, q, &mut s, blocks, groups.blocks(l), slots);
-            mu.is_none_or(|mu| eliminate_kernel(k, q, &mut s, mu))
+            let (mut s, products) = sections(k, q, segment);
+            let mut jacobian = JACOBIAN.take();
+            let evaluated = accumulate_kernel(problem, x, k, q, &mut s, products, blocks, groups.blocks(l), &mut jacobian);
+            JACOBIAN.set(jacobian);
+            match evaluated {
+                Ok(()) => mu.is_none_or(|mu| eliminate_kernel(k, q, &mut s, mu)),
+                Err(code) => {
+                    non_finite.fetch_min(code, Ordering::Relaxed);
+                    false
+                }
+            }
         });
-        failed.is_none()
+        match non_finite.into_inner() {
+            usize::MAX => Ok(failed.is_none()),
+            code if code % 2 == 0 => Err(SolverError::NonFiniteResidual { block: code / 2 }),
+            code => Err(SolverError::NonFiniteJacobian { block: code / 2 }),
+        }
     }
 
     /// Factors every D_L + μI = LLᵀ, solves [Z | z] = L⁻¹[C_L | g_L] and forms W = ZᵀZ,
-    /// v = Zᵀz (in parallel), accumulating the systems from `slots` again first unless they are
-    /// fresh from [`Self::accumulate`] without μ. Returns `false` if a dense factorisation fails
-    /// (not numerically positive definite).
-    pub fn eliminate(&mut self, blocks: &BlockStructure, groups: &GroupStructure, slots: &[f64], mu: f64) -> bool {
+    /// v = Zᵀz (in parallel), evaluating and accumulating the systems at `x` again first unless
+    /// they are fresh from [`Self::accumulate`] without μ. Returns `false` if a dense
+    /// factorisation fails (not numerically positive definite) or the evaluation does (it
+    /// succeeded at the same x before).
+    pub fn eliminate<P: LeastSquaresProblem>(
+        &mut self,
+        problem: &P,
+        x: &[f64],
+        blocks: &BlockStructure,
+        groups: &GroupStructure,
+        mu: f64,
+    ) -> bool {
         if !self.accumulated {
-            return self.accumulate(blocks, groups, slots, Some(mu));
+            return self.accumulate(problem, x, blocks, groups, Some(mu)).unwrap_or(false);
         }
         self.accumulated = false;
         let failed = try_for_each_segment(&mut self.buffer, &self.segment_ptr, &|l, segment| {
             let (k, q) = dimensions(groups, l);
-            let mut s = sections(k, q, segment);
+            let (mut s, _) = sections(k, q, segment);
             eliminate_kernel(k, q, &mut s, mu)
         });
         failed.is_none()
@@ -197,21 +264,54 @@ impl GroupSystems {
     }
 }
 
-/// D_L, C_L, G_L and g_L of one group from its blocks (in block order, rows in order). Only the
+/// D_L, C_L, G_L and g_L of one group from its blocks (in block order, rows in order), each
+/// evaluated at `x` into `jacobian` and `products` (its residuals and Jᵀr) first. Only the
 /// group's blocks touch its variables, so g_L equals that part of the full gradient summed in
-/// block order.
-fn accumulate_kernel(k: usize, q: usize, s: &mut Sections<'_>, blocks: &BlockStructure, group_blocks: &[u32], slots: &[f64]) {
+/// block order. Returns 2b (residuals) or 2b + 1 (Jacobian) for the first block b with a
+/// non-finite value.
+#[allow(clippy::too_many_arguments)]
+fn accumulate_kernel<P: LeastSquaresProblem>(
+    problem: &P,
+    x: &[f64],
+    k: usize,
+    q: usize,
+    s: &mut Sections<'_>,
+    products: &mut [f64],
+    blocks: &BlockStructure,
+    group_blocks: &[u32],
+    jacobian: &mut Vec<f64>,
+) -> Result<(), usize> {
     let w = q + 1;
     s.normal.fill(0.0);
     s.coupling.fill(0.0);
     s.gram.fill(0.0);
+    let mut rest = products;
     for &b in group_blocks {
         let b = b as usize;
-        let slot = blocks.slot(b, slots);
-        let n = slot.gradient.len();
+        // A block of a group has at least one (local) variable, so n > 0.
+        let (m, n) = (blocks.residual_count(b), blocks.variables(b).len());
+        let (residuals, tail) = std::mem::take(&mut rest).split_at_mut(m);
+        let (gradient, tail) = tail.split_at_mut(n);
+        rest = tail;
+        residuals.fill(0.0);
+        jacobian.clear();
+        jacobian.resize(m * n, 0.0);
+        problem.evaluate_block(b, x, residuals, Some(jacobian));
+        if !residuals.iter().all(|v| v.is_finite()) {
+            return Err(2 * b);
+        }
+        if !jacobian.iter().all(|v| v.is_finite()) {
+            return Err(2 * b + 1);
+        }
+        gradient.fill(0.0);
+        for (row, &rv) in jacobian.chunks_exact(n).zip(residuals.iter()) {
+            for (ga, &j) in gradient.iter_mut().zip(row) {
+                *ga += j * rv;
+            }
+        }
         let (local_positions, local_offsets) = blocks.local_positions(b);
         for (&p, &o) in local_positions.iter().zip(local_offsets) {
-            s.coupling[o as usize * w + q] += slot.gradient[p as usize];
+            s.coupling[o as usize * w + q] += gradient[p as usize];
         }
         let global_positions = blocks.global_positions(b);
         let coupling_index = blocks.coupling_index(b);
@@ -219,8 +319,7 @@ fn accumulate_kernel(k: usize, q: usize, s: &mut Sections<'_>, blocks: &BlockStr
         // the group's variables the block does not touch stay zero.
         s.row_locals.fill(0.0);
         s.row_globals.fill(0.0);
-        // A block of a group has at least one (local) variable, so n > 0.
-        for row in slot.jacobian.chunks_exact(n) {
+        for row in jacobian.chunks_exact(n) {
             for (&p, &o) in local_positions.iter().zip(local_offsets) {
                 s.row_locals[o as usize] = row[p as usize];
             }
@@ -250,6 +349,7 @@ fn accumulate_kernel(k: usize, q: usize, s: &mut Sections<'_>, blocks: &BlockStr
             }
         }
     }
+    Ok(())
 }
 
 /// Entries of a row of W − G_L summed side by side in [`eliminate_kernel`].

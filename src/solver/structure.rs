@@ -13,9 +13,10 @@ pub(crate) struct BlockStructure {
     pub residual_ptr: Vec<usize>,
     /// `slot_ptr[b]..slot_ptr[b+1]`: block `b`'s evaluation slot, laid out as
     /// [residuals m | Jacobian m×n row-major | Jᵀr n | upper-triangular Gram of global columns].
-    /// Blocks of a local group have no Gram part: their J_GᵀJ_G is summed per group (see
-    /// [`super::schur::GroupSystems`]); nor have blocks with a constant Jacobian: theirs is summed
-    /// once per revision straight into H_GG (see [`super::assembly::ConstantHessian`]).
+    /// Blocks with a constant Jacobian have no Gram part: theirs is summed once per revision
+    /// straight into H_GG (see [`super::assembly::ConstantHessian`]). Blocks of a local group
+    /// have an empty slot: they are evaluated into their group's system (see
+    /// [`super::schur::GroupSystems`]).
     pub slot_ptr: Vec<usize>,
     /// Positions (within the block's variable list) of its global variables.
     pub global_ptr: Vec<usize>,
@@ -88,7 +89,8 @@ impl BlockStructure {
         (&self.local_positions[range.clone()], &self.local_offsets[range])
     }
 
-    /// Splits block `b`'s slot (`slot` must be exactly that segment) into its parts.
+    /// Splits block `b`'s slot (`slot` must be exactly that segment; `b` without a local group)
+    /// into its parts.
     pub fn split_slot<'a>(&self, b: usize, slot: &'a mut [f64]) -> BlockSlot<'a> {
         let m = self.residual_count(b);
         let n = self.var_ptr[b + 1] - self.var_ptr[b];
@@ -98,7 +100,8 @@ impl BlockStructure {
         BlockSlot { residuals, jacobian, gradient, gram }
     }
 
-    /// Read-only views of block `b`'s slot within the whole slot buffer.
+    /// Read-only views of block `b`'s slot within the whole slot buffer (`b` without a local
+    /// group).
     pub fn slot<'a>(&self, b: usize, slots: &'a [f64]) -> BlockSlotRef<'a> {
         let m = self.residual_count(b);
         let n = self.var_ptr[b + 1] - self.var_ptr[b];
@@ -200,8 +203,11 @@ pub(crate) fn analyse<P: LeastSquaresProblem>(problem: &P) -> Result<(BlockStruc
         }
         let too_large = || invalid(b, "block too large".to_string());
         let constant = problem.block_jacobian_is_constant(b);
-        let gram_len = if group.is_none() && !constant { triangle_len(global_count) } else { 0 };
-        let slot_len = m.checked_mul(vars.len()).and_then(|mn| mn.checked_add(m + vars.len() + gram_len)).ok_or_else(too_large)?;
+        let gram_len = if constant { 0 } else { triangle_len(global_count) };
+        let slot_len = match group {
+            Some(_) => 0,
+            None => m.checked_mul(vars.len()).and_then(|mn| mn.checked_add(m + vars.len() + gram_len)).ok_or_else(too_large)?,
+        };
         let last_slot = s.slot_ptr[b];
         s.slot_ptr.push(last_slot.checked_add(slot_len).ok_or_else(too_large)?);
         s.variables.extend_from_slice(vars);

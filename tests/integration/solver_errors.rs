@@ -101,6 +101,32 @@ fn non_finite_residual_and_jacobian_name_the_block() {
 }
 
 #[test]
+fn non_finite_blocks_of_local_groups_are_named_and_the_lowest_block_wins() {
+    // Blocks 1 and 3 belong to the local groups {4} and {5}; blocks 0 and 2 are global. The
+    // groups' blocks are evaluated in their own pass: the error still names the lowest block.
+    let mut problem = Configurable::new(6, vec![vec![0], vec![1, 4], vec![2], vec![3, 5]]);
+    problem.groups = Some((4, vec![1, 1]));
+    let mut solver = LevenbergMarquardt::new(&problem, LmOptions::default()).unwrap();
+    let mut x = vec![0.0; 6];
+    let mut error = |residual: Option<usize>, jacobian: Option<usize>| {
+        problem.nan_residual_block = residual;
+        problem.nan_jacobian_block = jacobian;
+        solver.iterate(&problem, &mut x).unwrap_err()
+    };
+    assert_eq!(error(Some(1), None), SolverError::NonFiniteResidual { block: 1 });
+    assert_eq!(error(None, Some(3)), SolverError::NonFiniteJacobian { block: 3 });
+    assert_eq!(error(Some(2), Some(3)), SolverError::NonFiniteResidual { block: 2 });
+    assert_eq!(error(Some(3), Some(1)), SolverError::NonFiniteJacobian { block: 1 });
+    assert_eq!(error(Some(0), Some(1)), SolverError::NonFiniteResidual { block: 0 });
+    assert_eq!(x, vec![0.0; 6]);
+    // Finite again: the solver steps (to x = 1 everywhere).
+    problem.nan_residual_block = None;
+    problem.nan_jacobian_block = None;
+    let outcome = solver.iterate(&problem, &mut x).unwrap();
+    assert!(outcome.accepted && outcome.energy_after < 0.5 * outcome.energy_before, "{outcome:?}");
+}
+
+#[test]
 fn wrong_variable_vector_length_is_an_error() {
     let problem = Configurable::new(3, vec![vec![0, 1, 2]]);
     let mut solver = LevenbergMarquardt::new(&problem, LmOptions::default()).unwrap();
