@@ -54,7 +54,8 @@ fn add_gram(pattern: &NormalPattern, b: usize, gram: &[f64], hessian: &mut [f64]
     }
 }
 
-/// Sums the block slots in block order: returns E(x), and writes the full gradient g = Jᵀr and
+/// Sums the blocks' products in block order (from the slots, and for the blocks of a local
+/// group from their group's segment): returns E(x), and writes the full gradient g = Jᵀr and
 /// the values of H_GG = J_GᵀJ_G of the blocks without a local group on the normal pattern (the
 /// groups' blocks add theirs through [`GroupSystems`]): the constant blocks' share
 /// `constant_hessian` (summed by [`ConstantHessian::refresh`]) plus the other blocks' Gram
