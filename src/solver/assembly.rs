@@ -5,46 +5,9 @@ use rayon::prelude::*;
 
 use super::evaluation::{squared_norm, sum_in_block_order};
 use super::normal_pattern::{check_positions, NormalPattern};
-use super::packed_upper::add_outer_product;
 use super::schur::GroupSystems;
-use super::structure::{triangle_len, BlockStructure, GroupStructure};
+use super::structure::{BlockStructure, GroupStructure};
 use super::SolverError;
-
-/// The share of H_GG = J_GᵀJ_G of the blocks without a local group whose Jacobian is constant
-/// ([`super::LeastSquaresProblem::block_jacobian_is_constant`]): summed once per revision of the
-/// problem's constant Jacobians, straight from their Jacobians, instead of every iteration (and
-/// not kept per block).
-pub(crate) struct ConstantHessian {
-    values: Vec<f64>,
-    /// One block's packed Gram product.
-    gram: Vec<f64>,
-}
-
-impl ConstantHessian {
-    pub fn new(pattern: &NormalPattern) -> Self {
-        Self { values: vec![0.0; pattern.storage_len()], gram: Vec::new() }
-    }
-
-    /// Sums the Gram products J_bᵀJ_b of the constant blocks without a local group from the
-    /// Jacobians in their slots, each accumulated row by row as [`super::evaluation`] does for
-    /// the other blocks, in block order.
-    pub fn refresh(&mut self, structure: &BlockStructure, pattern: &NormalPattern, slots: &[f64]) {
-        self.values.fill(0.0);
-        for b in (0..structure.block_count()).filter(|&b| structure.constant_jacobian[b] && structure.group[b].is_none()) {
-            let slot = structure.slot(b, slots);
-            let n = slot.gradient.len();
-            if n == 0 {
-                continue;
-            }
-            self.gram.clear();
-            self.gram.resize(triangle_len(n), 0.0);
-            for row in slot.jacobian.chunks_exact(n) {
-                add_outer_product(row, &mut self.gram);
-            }
-            add_gram(pattern, b, &self.gram, &mut self.values);
-        }
-    }
-}
 
 /// Adds block `b`'s packed Gram product `gram` to the values of H_GG.
 fn add_gram(pattern: &NormalPattern, b: usize, gram: &[f64], hessian: &mut [f64]) {
@@ -57,26 +20,22 @@ fn add_gram(pattern: &NormalPattern, b: usize, gram: &[f64], hessian: &mut [f64]
 /// Sums the blocks' products in block order (from the slots, and for the blocks of a local
 /// group from their group's segment): returns E(x), and writes the full gradient g = Jᵀr and
 /// the values of H_GG = J_GᵀJ_G of the blocks without a local group on the normal pattern (the
-/// groups' blocks add theirs through [`GroupSystems`]): the constant blocks' share
-/// `constant_hessian` (summed by [`ConstantHessian::refresh`]) plus the other blocks' Gram
-/// products in block order.
+/// groups' blocks add theirs through [`GroupSystems`]), in block order.
 pub(crate) fn reduce_blocks(
     structure: &BlockStructure,
     pattern: &NormalPattern,
     slots: &[f64],
     systems: &GroupSystems,
-    constant_hessian: &ConstantHessian,
     gradient: &mut [f64],
     hessian: &mut [f64],
 ) -> f64 {
     gradient.fill(0.0);
-    hessian.copy_from_slice(&constant_hessian.values);
+    hessian.fill(0.0);
     let norms = (0..structure.block_count()).map(|b| {
         let (residuals, block_gradient) = match structure.group[b] {
             Some(_) => systems.block_products(structure, b),
             None => {
                 let slot = structure.slot(b, slots);
-                // Constant blocks' slots hold no Gram part (nothing to add).
                 add_gram(pattern, b, slot.gram, hessian);
                 (slot.residuals, slot.gradient)
             }

@@ -19,11 +19,9 @@ pub(crate) fn sum_in_block_order(norms: impl Iterator<Item = f64>) -> f64 {
 }
 
 /// Evaluates every block without a local group at `x` into its slot. With `reuse_constant`, the blocks whose Jacobian
-/// is constant ([`LeastSquaresProblem::block_jacobian_is_constant`]) keep the Jacobian already
-/// in their slots (evaluated at the same revision) and only their residuals and Jᵀr are
+/// is constant ([`LeastSquaresProblem::block_jacobian_is_constant`]) keep the Jacobian and Gram
+/// already in their slots (evaluated at the same revision) and only their residuals and Jᵀr are
 /// evaluated; the slots hold the same values, bit for bit, as a full evaluation would write.
-/// (Those blocks' Gram products are not kept in the slots: see
-/// [`super::assembly::ConstantHessian`].)
 /// Errors name the lowest non-finite block.
 pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
     problem: &P,
@@ -55,10 +53,10 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
         }
         // Jᵀr and the upper Gram of the global columns (in the order of the pattern's gram
         // targets), accumulated row by row; structurally zero entries are skipped. Only blocks
-        // without a local group and with a varying Jacobian have a Gram part, and all their
-        // variables are global, so its columns are the row's own entries in order.
+        // without a local group have a Gram part, and all their variables are global, so its
+        // columns are the row's own entries in order.
         s.gradient.fill(0.0);
-        let with_gram = !s.gram.is_empty();
+        let with_gram = !reused && !s.gram.is_empty();
         if with_gram {
             s.gram.fill(0.0);
         }

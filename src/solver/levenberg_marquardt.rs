@@ -2,7 +2,7 @@
 //! D = I) on the sparse normal equations, with Schur elimination of local variable groups.
 //! Used for the level-set field optimisation of the paper (Sec. 3.2.2, Eq. 8–12).
 
-use super::assembly::{reduce_blocks, ConstantHessian, ReducedGather, ReducedSystem};
+use super::assembly::{reduce_blocks, ReducedGather, ReducedSystem};
 use super::evaluation::{evaluate_energy_into, evaluate_energy_standalone, evaluate_slots};
 use super::normal_pattern::NormalPattern;
 use super::schur::GroupSystems;
@@ -37,8 +37,6 @@ pub struct LevenbergMarquardt {
     accepted: bool,
     gradient: Vec<f64>,
     hessian: Vec<f64>,
-    /// The constant blocks' share of `hessian`, summed at `constant_revision`.
-    constant_hessian: ConstantHessian,
     /// diag(JᵀJ) over the global variables (scratch of [`Self::initial_damping`]).
     global_diagonal: Vec<f64>,
     step: Vec<f64>,
@@ -68,7 +66,6 @@ impl LevenbergMarquardt {
             None
         };
         let systems = GroupSystems::new(&blocks, &groups);
-        let constant_hessian = ConstantHessian::new(&pattern);
         let gather = ReducedGather::new(&mut pattern, &groups, &systems)?;
         let n = blocks.variable_count;
         let nnz = pattern.storage_len();
@@ -81,7 +78,6 @@ impl LevenbergMarquardt {
             accepted: false,
             gradient: vec![0.0; n],
             hessian: vec![0.0; nnz],
-            constant_hessian,
             global_diagonal: vec![0.0; blocks.global_count],
             step: vec![0.0; n],
             trial_x: vec![0.0; n],
@@ -170,16 +166,12 @@ impl LevenbergMarquardt {
             )
         };
         let eliminated = lowest_block_error(evaluated, eliminated)?;
-        if !reuse_constant {
-            self.constant_hessian.refresh(&self.blocks, &self.pattern, &self.slots);
-        }
         self.constant_revision = Some(revision);
         let energy = reduce_blocks(
             &self.blocks,
             &self.pattern,
             &self.slots,
             &self.systems,
-            &self.constant_hessian,
             &mut self.gradient,
             &mut self.hessian,
         );

@@ -13,10 +13,8 @@ pub(crate) struct BlockStructure {
     pub residual_ptr: Vec<usize>,
     /// `slot_ptr[b]..slot_ptr[b+1]`: block `b`'s evaluation slot, laid out as
     /// [residuals m | Jacobian m×n row-major | Jᵀr n | upper-triangular Gram of global columns].
-    /// Blocks with a constant Jacobian have no Gram part: theirs is summed once per revision
-    /// straight into H_GG (see [`super::assembly::ConstantHessian`]). Blocks of a local group
-    /// have an empty slot: they are evaluated into their group's system (see
-    /// [`super::schur::GroupSystems`]).
+    /// Blocks of a local group have an empty slot: they are evaluated into their group's system
+    /// (see [`super::schur::GroupSystems`]).
     pub slot_ptr: Vec<usize>,
     /// Positions (within the block's variable list) of its global variables.
     pub global_ptr: Vec<usize>,
@@ -55,10 +53,9 @@ pub(crate) struct BlockSlot<'a> {
     pub gram: &'a mut [f64],
 }
 
-/// Read-only views of one block's evaluation slot.
+/// Read-only views of the parts of one block's evaluation slot that the reduction reads.
 pub(crate) struct BlockSlotRef<'a> {
     pub residuals: &'a [f64],
-    pub jacobian: &'a [f64],
     pub gradient: &'a [f64],
     pub gram: &'a [f64],
 }
@@ -107,9 +104,8 @@ impl BlockStructure {
         let n = self.var_ptr[b + 1] - self.var_ptr[b];
         let slot = &slots[self.slot_ptr[b]..self.slot_ptr[b + 1]];
         let (residuals, rest) = slot.split_at(m);
-        let (jacobian, rest) = rest.split_at(m * n);
-        let (gradient, gram) = rest.split_at(n);
-        BlockSlotRef { residuals, jacobian, gradient, gram }
+        let (gradient, gram) = rest[m * n..].split_at(n);
+        BlockSlotRef { residuals, gradient, gram }
     }
 }
 
@@ -203,10 +199,12 @@ pub(crate) fn analyse<P: LeastSquaresProblem>(problem: &P) -> Result<(BlockStruc
         }
         let too_large = || invalid(b, "block too large".to_string());
         let constant = problem.block_jacobian_is_constant(b);
-        let gram_len = if constant { 0 } else { triangle_len(global_count) };
         let slot_len = match group {
             Some(_) => 0,
-            None => m.checked_mul(vars.len()).and_then(|mn| mn.checked_add(m + vars.len() + gram_len)).ok_or_else(too_large)?,
+            None => m
+                .checked_mul(vars.len())
+                .and_then(|mn| mn.checked_add(m + vars.len() + triangle_len(global_count)))
+                .ok_or_else(too_large)?,
         };
         let last_slot = s.slot_ptr[b];
         s.slot_ptr.push(last_slot.checked_add(slot_len).ok_or_else(too_large)?);
