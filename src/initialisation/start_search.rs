@@ -335,8 +335,12 @@ impl StartSearch {
         let mut params = self.params.clone();
         params.schedule.clear();
         params.gradient_target = None;
-        if let Some(proxy) = &self.proxy {
-            let field = carried_to(proxy, &probed, &self.mesh);
+        if let Some(proxy) = self.proxy.take() {
+            let field = carried_to(&proxy, &probed, &self.mesh);
+            // The stand-in and its probes' solvers are done with: free them before the mesh's
+            // solver is built, so that they do not add to the design's peak memory.
+            drop(proxy);
+            self.solvers = [None, None];
             return FieldSolver::new(&self.mesh, &field, params).map_err(SearchError::Field);
         }
         let field = probed;
