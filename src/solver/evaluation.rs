@@ -18,8 +18,20 @@ pub(crate) fn sum_in_block_order(norms: impl Iterator<Item = f64>) -> f64 {
     norms.fold(0.0, |acc, v| acc + v)
 }
 
-/// Evaluates every block without a local group at `x` into its slot. With `reuse_constant`, the blocks whose Jacobian
-/// is constant ([`LeastSquaresProblem::block_jacobian_is_constant`]) keep the Jacobian and Gram
+/// Jᵀr of a block into `gradient` (its length is the Jacobian's column count, > 0), summed row
+/// by row in order.
+pub(crate) fn jacobian_transpose_times(jacobian: &[f64], residuals: &[f64], gradient: &mut [f64]) {
+    gradient.fill(0.0);
+    for (row, &rv) in jacobian.chunks_exact(gradient.len()).zip(residuals) {
+        for (ga, &j) in gradient.iter_mut().zip(row) {
+            *ga += j * rv;
+        }
+    }
+}
+
+/// Evaluates every block without a local group at `x` into its slot. With `reuse_constant`, the
+/// blocks whose Jacobian is constant ([`LeastSquaresProblem::block_jacobian_is_constant`]) keep
+/// the Jacobian and Gram
 /// already in their slots (evaluated at the same revision) and only their residuals and Jᵀr are
 /// evaluated; the slots hold the same values, bit for bit, as a full evaluation would write.
 /// Errors name the lowest non-finite block.
@@ -36,7 +48,7 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
         }
         let s = structure.split_slot(b, slot);
         s.residuals.fill(0.0);
-        let reused = reuse_constant && structure.constant_jacobian[b];
+        let reused = reuse_constant && problem.block_jacobian_is_constant(b);
         if reused {
             problem.evaluate_block(b, x, s.residuals, None);
         } else {
@@ -55,17 +67,11 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
         // targets), accumulated row by row; structurally zero entries are skipped. Only blocks
         // without a local group have a Gram part, and all their variables are global, so its
         // columns are the row's own entries in order.
-        s.gradient.fill(0.0);
-        let with_gram = !reused && !s.gram.is_empty();
-        if with_gram {
+        jacobian_transpose_times(s.jacobian, s.residuals, s.gradient);
+        if !reused && !s.gram.is_empty() {
+            debug_assert!(structure.global_positions(b).iter().enumerate().all(|(i, &p)| p as usize == i));
             s.gram.fill(0.0);
-        }
-        debug_assert!(s.gram.is_empty() || structure.global_positions(b).iter().enumerate().all(|(i, &p)| p as usize == i));
-        for (row, &rv) in s.jacobian.chunks_exact(n).zip(s.residuals.iter()) {
-            for (ga, &j) in s.gradient.iter_mut().zip(row) {
-                *ga += j * rv;
-            }
-            if with_gram {
+            for row in s.jacobian.chunks_exact(n) {
                 add_outer_product(row, s.gram);
             }
         }

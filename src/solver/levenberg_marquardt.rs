@@ -324,7 +324,6 @@ impl LevenbergMarquardt {
         for b in 0..self.blocks.block_count() {
             if problem.block_residual_count(b) != self.blocks.residual_count(b)
                 || problem.block_variables(b) != self.blocks.variables(b)
-                || problem.block_jacobian_is_constant(b) != self.blocks.constant_jacobian[b]
             {
                 return changed(format!("structure of block {b} changed"));
             }

@@ -20,9 +20,8 @@ pub trait LeastSquaresProblem: Sync {
     /// (it may depend on the problem's weights; see [`Self::constant_jacobian_revision`]). The
     /// solver then evaluates its Jacobian and Gram product once and reuses them, evaluating only
     /// the residuals, while the revision stays the same (blocks touching a local group are
-    /// evaluated in full every iteration all the same: their Jacobians are not stored). Fixed
-    /// for the life of the problem, like the block's variables (it decides how the block is
-    /// stored). Default: no block is.
+    /// evaluated in full every iteration all the same: their Jacobians are not stored).
+    /// Default: no block is.
     fn block_jacobian_is_constant(&self, _b: usize) -> bool {
         false
     }

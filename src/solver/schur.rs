@@ -27,6 +27,7 @@
 use std::cell::Cell;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
+use super::evaluation::jacobian_transpose_times;
 use super::packed_upper::add_outer_product;
 use super::segments::try_for_each_segment;
 use super::structure::{triangle_len, BlockStructure, GroupStructure};
@@ -303,12 +304,7 @@ fn accumulate_kernel<P: LeastSquaresProblem>(
         if !jacobian.iter().all(|v| v.is_finite()) {
             return Err(2 * b + 1);
         }
-        gradient.fill(0.0);
-        for (row, &rv) in jacobian.chunks_exact(n).zip(residuals.iter()) {
-            for (ga, &j) in gradient.iter_mut().zip(row) {
-                *ga += j * rv;
-            }
-        }
+        jacobian_transpose_times(jacobian, residuals, gradient);
         let (local_positions, local_offsets) = blocks.local_positions(b);
         for (&p, &o) in local_positions.iter().zip(local_offsets) {
             s.coupling[o as usize * w + q] += gradient[p as usize];

@@ -29,9 +29,6 @@ pub(crate) struct BlockStructure {
     pub local_offsets: Vec<u32>,
     /// The local group touched by each block.
     pub group: Vec<Option<u32>>,
-    /// Whether each block's Jacobian is constant
-    /// ([`LeastSquaresProblem::block_jacobian_is_constant`]).
-    pub constant_jacobian: Vec<bool>,
 }
 
 /// Local-group structure (CSR-like flat arrays indexed by group).
@@ -164,7 +161,6 @@ pub(crate) fn analyse<P: LeastSquaresProblem>(problem: &P) -> Result<(BlockStruc
         local_positions: Vec::new(),
         local_offsets: Vec::new(),
         group: Vec::with_capacity(block_count),
-        constant_jacobian: Vec::with_capacity(block_count),
     };
     let mut seen = vec![usize::MAX; n];
     let mut group_block_count = vec![0usize; group_count];
@@ -198,7 +194,6 @@ pub(crate) fn analyse<P: LeastSquaresProblem>(problem: &P) -> Result<(BlockStruc
             }
         }
         let too_large = || invalid(b, "block too large".to_string());
-        let constant = problem.block_jacobian_is_constant(b);
         let slot_len = match group {
             Some(_) => 0,
             None => m
@@ -217,7 +212,6 @@ pub(crate) fn analyse<P: LeastSquaresProblem>(problem: &P) -> Result<(BlockStruc
             group_block_count[l] += 1;
         }
         s.group.push(group.map(|l| l as u32));
-        s.constant_jacobian.push(constant);
     }
     s.coupling_index = vec![0; s.global_positions.len()];
 
