@@ -1,6 +1,9 @@
-//! Parallel evaluation of the residual blocks: at x with Jacobians into per-block slots (plus
-//! each block's Jᵀr and Gram products of its global columns), and at trial points without them.
-//! (The blocks of local groups are evaluated at x by [`super::schur::GroupSystems`].)
+//! Parallel evaluation of the residual blocks: at x into per-block slots (residuals, Jᵀr and
+//! the Gram products of the global columns; the Jacobian itself only passes through a per-thread
+//! scratch), and at trial points without Jacobians. (The blocks of local groups are evaluated at
+//! x by [`super::schur::GroupSystems`].)
+use std::cell::Cell;
+
 use rayon::prelude::*;
 
 use super::packed_upper::add_outer_product;
@@ -18,6 +21,21 @@ pub(crate) fn sum_in_block_order(norms: impl Iterator<Item = f64>) -> f64 {
     norms.fold(0.0, |acc, v| acc + v)
 }
 
+thread_local! {
+    /// The Jacobian of the block being evaluated on this thread (taken while in use, so that a
+    /// nested use gets a fresh one rather than a conflict).
+    static JACOBIAN: Cell<Vec<f64>> = const { Cell::new(Vec::new()) };
+}
+
+/// Runs `f` with this thread's Jacobian scratch, then keeps it (and its capacity) for the next
+/// block.
+pub(crate) fn with_jacobian_scratch<T>(f: impl FnOnce(&mut Vec<f64>) -> T) -> T {
+    let mut jacobian = JACOBIAN.take();
+    let result = f(&mut jacobian);
+    JACOBIAN.set(jacobian);
+    result
+}
+
 /// Jᵀr of a block into `gradient` (its length is the Jacobian's column count, > 0), summed row
 /// by row in order.
 pub(crate) fn jacobian_transpose_times(jacobian: &[f64], residuals: &[f64], gradient: &mut [f64]) {
@@ -29,12 +47,12 @@ pub(crate) fn jacobian_transpose_times(jacobian: &[f64], residuals: &[f64], grad
     }
 }
 
-/// Evaluates every block without a local group at `x` into its slot. With `reuse_constant`, the
-/// blocks whose Jacobian is constant ([`LeastSquaresProblem::block_jacobian_is_constant`]) keep
-/// the Jacobian and Gram
-/// already in their slots (evaluated at the same revision) and only their residuals and Jᵀr are
-/// evaluated; the slots hold the same values, bit for bit, as a full evaluation would write.
-/// Errors name the lowest non-finite block.
+/// Evaluates every block without a local group at `x` into its slot: residuals, Jᵀr and the
+/// Gram products of its columns, from its Jacobian evaluated into a per-thread scratch. With
+/// `reuse_constant`, the blocks whose Jacobian is constant
+/// ([`LeastSquaresProblem::block_jacobian_is_constant`]) keep the Gram products already in their
+/// slots (evaluated at the same revision); the slots hold the same values, bit for bit, as a full
+/// evaluation would write. Errors name the lowest non-finite block.
 pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
     problem: &P,
     structure: &BlockStructure,
@@ -47,35 +65,34 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
             return true;
         }
         let s = structure.split_slot(b, slot);
-        s.residuals.fill(0.0);
-        let reused = reuse_constant && problem.block_jacobian_is_constant(b);
-        if reused {
-            problem.evaluate_block(b, x, s.residuals, None);
-        } else {
-            s.jacobian.fill(0.0);
-            problem.evaluate_block(b, x, s.residuals, Some(s.jacobian));
-        }
-        // A reused Jacobian was checked when it was evaluated.
-        if !(s.residuals.iter().all(|v| v.is_finite()) && (reused || s.jacobian.iter().all(|v| v.is_finite()))) {
-            return false;
-        }
         let n = s.gradient.len();
-        if n == 0 {
-            return true;
-        }
-        // Jᵀr and the upper Gram of the global columns (in the order of the pattern's gram
-        // targets), accumulated row by row; structurally zero entries are skipped. Only blocks
-        // without a local group have a Gram part, and all their variables are global, so its
-        // columns are the row's own entries in order.
-        jacobian_transpose_times(s.jacobian, s.residuals, s.gradient);
-        if !reused && !s.gram.is_empty() {
-            debug_assert!(structure.global_positions(b).iter().enumerate().all(|(i, &p)| p as usize == i));
-            s.gram.fill(0.0);
-            for row in s.jacobian.chunks_exact(n) {
-                add_outer_product(row, s.gram);
+        with_jacobian_scratch(|jacobian| {
+            s.residuals.fill(0.0);
+            jacobian.clear();
+            jacobian.resize(s.residuals.len() * n, 0.0);
+            problem.evaluate_block(b, x, s.residuals, Some(jacobian));
+            // A constant Jacobian reused at its revision was checked when it was first evaluated.
+            let reused = reuse_constant && problem.block_jacobian_is_constant(b);
+            if !(s.residuals.iter().all(|v| v.is_finite()) && (reused || jacobian.iter().all(|v| v.is_finite()))) {
+                return false;
             }
-        }
-        true
+            if n == 0 {
+                return true;
+            }
+            // Jᵀr and the upper Gram of the global columns (in the order of the pattern's gram
+            // targets), accumulated row by row; structurally zero entries are skipped. Only
+            // blocks without a local group have a Gram part, and all their variables are global,
+            // so its columns are the row's own entries in order.
+            jacobian_transpose_times(jacobian, s.residuals, s.gradient);
+            if !reused && !s.gram.is_empty() {
+                debug_assert!(structure.global_positions(b).iter().enumerate().all(|(i, &p)| p as usize == i));
+                s.gram.fill(0.0);
+                for row in jacobian.chunks_exact(n) {
+                    add_outer_product(row, s.gram);
+                }
+            }
+            true
+        })
     });
     match failed {
         None => Ok(()),

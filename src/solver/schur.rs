@@ -24,10 +24,9 @@
 //! The global Gram G_L = J_GᵀJ_G of the group's blocks is summed here too (from the same
 //! Jacobian rows) rather than scattered into H_GG block by block: the group hands S the single
 //! packed term W − G_L on its Schur targets, which cover every global pair of its blocks.
-use std::cell::Cell;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use super::evaluation::jacobian_transpose_times;
+use super::evaluation::{jacobian_transpose_times, with_jacobian_scratch};
 use super::packed_upper::add_outer_product;
 use super::segments::try_for_each_segment;
 use super::structure::{triangle_len, BlockStructure, GroupStructure};
@@ -36,12 +35,12 @@ use super::{LeastSquaresProblem, SolverError};
 /// Dense workspaces of all local groups (group l: k local variables, q coupled global
 /// variables), sized once, one segment per group in one buffer.
 ///
-/// A segment holds, in this order: D_L, after elimination its Cholesky factor L (k×k, lower
-/// triangle used); [C_L | g_L], after elimination [Z | z] (k×(q+1)); G_L, after elimination
+/// A segment holds, in this order: D_L, after elimination its Cholesky factor L (lower triangle
+/// of k×k packed row by row); [C_L | g_L], after elimination [Z | z] (k×(q+1)); G_L, after elimination
 /// W − G_L (upper triangle of q×q packed row by row, the order of the pattern's Schur targets);
-/// v (q); the dense local and global entries of the Jacobian row being accumulated (k + q); and
-/// the residuals and Jᵀr of each of the group's blocks, in block order (m + n each). All
-/// row-major.
+/// v (q); and the residuals and Jᵀr of each of the group's blocks, in block order (m + n each).
+/// All row-major. (A block's Jacobian and the dense row being accumulated live in a per-thread
+/// scratch, not in the segment.)
 pub(crate) struct GroupSystems {
     /// `buffer[segment_ptr[l]..segment_ptr[l + 1]]`: the segment of group l.
     segment_ptr: Vec<usize>,
@@ -53,12 +52,6 @@ pub(crate) struct GroupSystems {
     product_start: Vec<usize>,
 }
 
-thread_local! {
-    /// The Jacobian of the block being accumulated on this thread (taken while in use, so that
-    /// a nested use would get a fresh one rather than a conflict).
-    static JACOBIAN: Cell<Vec<f64>> = const { Cell::new(Vec::new()) };
-}
-
 /// Mutable views of a group's segment.
 struct Sections<'a> {
     /// D_L, then L.
@@ -68,13 +61,11 @@ struct Sections<'a> {
     /// G_L, then W − G_L.
     gram: &'a mut [f64],
     schur_rhs: &'a mut [f64],
-    row_locals: &'a mut [f64],
-    row_globals: &'a mut [f64],
 }
 
 /// Section lengths of a group with k local and q global variables, in segment order.
-fn section_lengths(k: usize, q: usize) -> [usize; 6] {
-    [k * k, k * (q + 1), triangle_len(q), q, k, q]
+fn section_lengths(k: usize, q: usize) -> [usize; 4] {
+    [triangle_len(k), k * (q + 1), triangle_len(q), q]
 }
 
 /// Offset of section `index` (see [`section_lengths`]) within a segment.
@@ -88,20 +79,16 @@ const SCHUR_RHS: usize = 3;
 
 /// The sections of a segment, and the rest of it: its blocks' residuals and Jᵀr.
 fn sections(k: usize, q: usize, segment: &mut [f64]) -> (Sections<'_>, &mut [f64]) {
-    let [normal, coupling, gram, schur_rhs, row_locals, row_globals] = section_lengths(k, q);
+    let [normal, coupling, gram, schur_rhs] = section_lengths(k, q);
     let (normal_part, rest) = segment.split_at_mut(normal);
     let (coupling_part, rest) = rest.split_at_mut(coupling);
     let (gram_part, rest) = rest.split_at_mut(gram);
-    let (schur_rhs_part, rest) = rest.split_at_mut(schur_rhs);
-    let (row_locals_part, rest) = rest.split_at_mut(row_locals);
-    let (row_globals_part, products) = rest.split_at_mut(row_globals);
+    let (schur_rhs_part, products) = rest.split_at_mut(schur_rhs);
     let sections = Sections {
         normal: normal_part,
         coupling: coupling_part,
         gram: gram_part,
         schur_rhs: schur_rhs_part,
-        row_locals: row_locals_part,
-        row_globals: row_globals_part,
     };
     (sections, products)
 }
@@ -170,7 +157,7 @@ impl GroupSystems {
     pub fn max_diagonal(&self, groups: &GroupStructure) -> f64 {
         (0..groups.group_count()).fold(0.0, |m: f64, l| {
             let k = groups.size(l);
-            (0..k).fold(m, |m, i| m.max(self.buffer[self.segment_ptr[l] + i * k + i]))
+            (0..k).fold(m, |m, i| m.max(self.buffer[self.segment_ptr[l] + lower_index(i, i)]))
         })
     }
 
@@ -192,9 +179,7 @@ impl GroupSystems {
         let failed = try_for_each_segment(&mut self.buffer, &self.segment_ptr, &|l, segment| {
             let (k, q) = dimensions(groups, l);
             let (mut s, products) = sections(k, q, segment);
-            let mut jacobian = JACOBIAN.take();
-            let evaluated = accumulate_kernel(problem, x, k, q, &mut s, products, blocks, groups.blocks(l), &mut jacobian);
-            JACOBIAN.set(jacobian);
+            let evaluated = with_jacobian_scratch(|jacobian| accumulate_kernel(problem, x, k, q, &mut s, products, blocks, groups.blocks(l), jacobian));
             match evaluated {
                 Ok(()) => mu.is_none_or(|mu| eliminate_kernel(k, q, &mut s, mu)),
                 Err(code) => {
@@ -242,7 +227,7 @@ impl GroupSystems {
             let (k, q) = dimensions(groups, l);
             let segment = &self.buffer[self.segment_ptr[l]..self.segment_ptr[l + 1]];
             let w = q + 1;
-            let factor = &segment[..k * k];
+            let factor = &segment[..triangle_len(k)];
             let solved_start = section_offset(k, q, COUPLING);
             let solved = &segment[solved_start..solved_start + k * w];
             let globals = groups.globals(l);
@@ -253,9 +238,9 @@ impl GroupSystems {
             for i in (0..k).rev() {
                 let mut value = step[i];
                 for p in i + 1..k {
-                    value -= factor[p * k + i] * step[p];
+                    value -= factor[lower_index(p, i)] * step[p];
                 }
-                step[i] = value / factor[i * k + i];
+                step[i] = value / factor[lower_index(i, i)];
             }
             for h in step.iter_mut() {
                 *h = -*h;
@@ -266,10 +251,10 @@ impl GroupSystems {
 }
 
 /// D_L, C_L, G_L and g_L of one group from its blocks (in block order, rows in order), each
-/// evaluated at `x` into `jacobian` and `products` (its residuals and Jᵀr) first. Only the
-/// group's blocks touch its variables, so g_L equals that part of the full gradient summed in
-/// block order. Returns 2b (residuals) or 2b + 1 (Jacobian) for the first block b with a
-/// non-finite value.
+/// evaluated at `x` into `scratch` (its Jacobian) and `products` (its residuals and Jᵀr) first.
+/// Only the group's blocks touch its variables, so g_L equals that part of the full gradient
+/// summed in block order. Returns 2b (residuals) or 2b + 1 (Jacobian) for the first block b with
+/// a non-finite value.
 #[allow(clippy::too_many_arguments)]
 fn accumulate_kernel<P: LeastSquaresProblem>(
     problem: &P,
@@ -280,7 +265,7 @@ fn accumulate_kernel<P: LeastSquaresProblem>(
     products: &mut [f64],
     blocks: &BlockStructure,
     group_blocks: &[u32],
-    jacobian: &mut Vec<f64>,
+    scratch: &mut Vec<f64>,
 ) -> Result<(), usize> {
     let w = q + 1;
     s.normal.fill(0.0);
@@ -295,8 +280,12 @@ fn accumulate_kernel<P: LeastSquaresProblem>(
         let (gradient, tail) = tail.split_at_mut(n);
         rest = tail;
         residuals.fill(0.0);
-        jacobian.clear();
-        jacobian.resize(m * n, 0.0);
+        // The block's Jacobian, then the dense local and global entries of the row being
+        // accumulated (entries of the group's variables the block does not touch stay zero).
+        scratch.clear();
+        scratch.resize(m * n + k + q, 0.0);
+        let (jacobian, row) = scratch.split_at_mut(m * n);
+        let (row_locals, row_globals) = row.split_at_mut(k);
         problem.evaluate_block(b, x, residuals, Some(jacobian));
         if !residuals.iter().all(|v| v.is_finite()) {
             return Err(2 * b);
@@ -311,37 +300,34 @@ fn accumulate_kernel<P: LeastSquaresProblem>(
         }
         let global_positions = blocks.global_positions(b);
         let coupling_index = blocks.coupling_index(b);
-        // The row's entries, scattered densely over the group's locals and globals; entries of
-        // the group's variables the block does not touch stay zero.
-        s.row_locals.fill(0.0);
-        s.row_globals.fill(0.0);
+        // Each row's entries, scattered densely over the group's locals and globals.
         for row in jacobian.chunks_exact(n) {
             for (&p, &o) in local_positions.iter().zip(local_offsets) {
-                s.row_locals[o as usize] = row[p as usize];
+                row_locals[o as usize] = row[p as usize];
             }
             let mut any_global = false;
             for (&p, &i) in global_positions.iter().zip(coupling_index) {
                 let value = row[p as usize];
-                s.row_globals[i as usize] = value;
+                row_globals[i as usize] = value;
                 any_global |= value != 0.0;
             }
             // Structural zeros (auxiliaries absent from a residual row, field values of uncrossed
             // edges) add nothing and are skipped row by row.
-            for (a, &va) in s.row_locals.iter().enumerate() {
+            for (a, &va) in row_locals.iter().enumerate() {
                 if va == 0.0 {
                     continue;
                 }
-                for (d, &vc) in s.normal[a * k..a * k + a + 1].iter_mut().zip(s.row_locals.iter()) {
+                for (d, &vc) in s.normal[lower_index(a, 0)..=lower_index(a, a)].iter_mut().zip(row_locals.iter()) {
                     *d += va * vc;
                 }
                 if any_global {
-                    for (c, &vg) in s.coupling[a * w..a * w + q].iter_mut().zip(s.row_globals.iter()) {
+                    for (c, &vg) in s.coupling[a * w..a * w + q].iter_mut().zip(row_globals.iter()) {
                         *c += va * vg;
                     }
                 }
             }
             if any_global {
-                add_outer_product(s.row_globals, s.gram);
+                add_outer_product(row_globals, s.gram);
             }
         }
     }
@@ -362,12 +348,12 @@ fn eliminate_kernel(k: usize, q: usize, s: &mut Sections<'_>, mu: f64) -> bool {
     for i in 0..k {
         let (done, rest) = s.coupling.split_at_mut(i * w);
         let current = &mut rest[..w];
-        for (p, &lip) in factor[i * k..i * k + i].iter().enumerate() {
+        for (p, &lip) in factor[lower_index(i, 0)..lower_index(i, i)].iter().enumerate() {
             for (c, &z) in current.iter_mut().zip(&done[p * w..(p + 1) * w]) {
                 *c -= lip * z;
             }
         }
-        let diagonal = factor[i * k + i];
+        let diagonal = factor[lower_index(i, i)];
         for c in current.iter_mut() {
             *c /= diagonal;
         }
@@ -400,17 +386,17 @@ fn eliminate_kernel(k: usize, q: usize, s: &mut Sections<'_>, mu: f64) -> bool {
     true
 }
 
-/// Cholesky factor L of `normal + μI` (row-major k×k), computed in place over the lower triangle
-/// of `normal`. Returns `false` on a non-positive or non-finite pivot (the matrix is then partly
+/// Cholesky factor L of `normal + μI` (the lower triangle of k×k packed row by row), computed in
+/// place. Returns `false` on a non-positive or non-finite pivot (the matrix is then partly
 /// overwritten).
 fn cholesky_lower_in_place(normal: &mut [f64], mu: f64, k: usize) -> bool {
     for j in 0..k {
-        let (above, rest) = normal.split_at_mut(j * k);
-        let row_j = &mut rest[..k];
+        let (above, rest) = normal.split_at_mut(lower_index(j, 0));
+        let row_j = &mut rest[..=j];
         for i in 0..j {
-            let row_i = &above[i * k..i * k + i];
+            let row_i = &above[lower_index(i, 0)..lower_index(i, i)];
             let dot: f64 = row_i.iter().zip(&row_j[..i]).map(|(a, b)| a * b).sum();
-            row_j[i] = (row_j[i] - dot) / above[i * k + i];
+            row_j[i] = (row_j[i] - dot) / above[lower_index(i, i)];
         }
         let squares: f64 = row_j[..j].iter().map(|v| v * v).sum();
         let pivot = row_j[j] + mu - squares;
@@ -420,6 +406,12 @@ fn cholesky_lower_in_place(normal: &mut [f64], mu: f64, k: usize) -> bool {
         row_j[j] = pivot.sqrt();
     }
     true
+}
+
+/// Index of entry (i, j), j ≤ i, in the row-by-row packed lower triangle of a k×k matrix (the
+/// layout of D_L and its factor L).
+fn lower_index(i: usize, j: usize) -> usize {
+    i * (i + 1) / 2 + j
 }
 
 /// Index of entry (i, j), i ≤ j, in the row-by-row packed upper triangle of a q×q matrix.

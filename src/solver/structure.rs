@@ -12,7 +12,7 @@ pub(crate) struct BlockStructure {
     pub variables: Vec<u32>,
     pub residual_ptr: Vec<usize>,
     /// `slot_ptr[b]..slot_ptr[b+1]`: block `b`'s evaluation slot, laid out as
-    /// [residuals m | Jacobian m×n row-major | Jᵀr n | upper-triangular Gram of global columns].
+    /// [residuals m | Jᵀr n | upper-triangular Gram of global columns].
     /// Blocks of a local group have an empty slot: they are evaluated into their group's system
     /// (see [`super::schur::GroupSystems`]).
     pub slot_ptr: Vec<usize>,
@@ -45,7 +45,6 @@ pub(crate) struct GroupStructure {
 /// Views of one block's evaluation slot.
 pub(crate) struct BlockSlot<'a> {
     pub residuals: &'a mut [f64],
-    pub jacobian: &'a mut [f64],
     pub gradient: &'a mut [f64],
     pub gram: &'a mut [f64],
 }
@@ -89,9 +88,8 @@ impl BlockStructure {
         let m = self.residual_count(b);
         let n = self.var_ptr[b + 1] - self.var_ptr[b];
         let (residuals, rest) = slot.split_at_mut(m);
-        let (jacobian, rest) = rest.split_at_mut(m * n);
         let (gradient, gram) = rest.split_at_mut(n);
-        BlockSlot { residuals, jacobian, gradient, gram }
+        BlockSlot { residuals, gradient, gram }
     }
 
     /// Read-only views of block `b`'s slot within the whole slot buffer (`b` without a local
@@ -101,7 +99,7 @@ impl BlockStructure {
         let n = self.var_ptr[b + 1] - self.var_ptr[b];
         let slot = &slots[self.slot_ptr[b]..self.slot_ptr[b + 1]];
         let (residuals, rest) = slot.split_at(m);
-        let (gradient, gram) = rest[m * n..].split_at(n);
+        let (gradient, gram) = rest.split_at(n);
         BlockSlotRef { residuals, gradient, gram }
     }
 }
@@ -196,10 +194,7 @@ pub(crate) fn analyse<P: LeastSquaresProblem>(problem: &P) -> Result<(BlockStruc
         let too_large = || invalid(b, "block too large".to_string());
         let slot_len = match group {
             Some(_) => 0,
-            None => m
-                .checked_mul(vars.len())
-                .and_then(|mn| mn.checked_add(m + vars.len() + triangle_len(global_count)))
-                .ok_or_else(too_large)?,
+            None => (m + vars.len()).checked_add(triangle_len(global_count)).ok_or_else(too_large)?,
         };
         let last_slot = s.slot_ptr[b];
         s.slot_ptr.push(last_slot.checked_add(slot_len).ok_or_else(too_large)?);
