@@ -23,14 +23,15 @@ use faer::{Conj, MatMut, Par, Side};
 use super::SolverError;
 
 pub(crate) struct SparseCholesky {
-    /// Lower triangle of P A Pᵀ (CSC, sorted rows).
-    permuted_pattern: SymbolicSparseColMat<usize>,
+    /// Lower triangle of P A Pᵀ (CSC, sorted rows). Indices, here and in the symbolic analysis,
+    /// are 32-bit: half the memory of the pattern and of the factor's row structure.
+    permuted_pattern: SymbolicSparseColMat<u32>,
     /// `values[p]` (the caller's storage) = entry `original_position[p]` of the caller's pattern.
     original_position: Vec<usize>,
     /// `variables[i]`: the caller's variable at position `i` of the factor's order.
     variables: Vec<usize>,
     separator_len: usize,
-    symbolic: SymbolicCholesky<usize>,
+    symbolic: SymbolicCholesky<u32>,
     factor: Vec<f64>,
     scratch: MemBuffer,
 }
@@ -51,6 +52,10 @@ impl SparseCholesky {
             .map(|(t, r, c)| (t, local[r], local[c]))
             .collect();
 
+        if m >= INDEX_LIMIT || entries.len() >= INDEX_LIMIT {
+            let message = format!("a domain of {m} variables and {} entries exceeds 32-bit indices", entries.len());
+            return Err(SolverError::SymbolicAnalysisFailed { message });
+        }
         // Fill-reducing ordering of the interior (the one faer's `SymmetricOrdering::Amd`
         // computes); the separator stays last.
         let mut new_index: Vec<usize> = (0..m).collect();
@@ -174,7 +179,7 @@ impl SparseCholesky {
                     r[(i - first, j - first)] = values[(i - start, column)];
                 }
                 for (p, &i) in supernode.pattern().iter().enumerate() {
-                    r[(i - first, j - first)] = values[(width + p, column)];
+                    r[(i as usize - first, j - first)] = values[(width + p, column)];
                 }
             }
         }
@@ -182,7 +187,7 @@ impl SparseCholesky {
 }
 
 /// The supernodal view of a factor (`analyse` accepts only supernodal analyses).
-fn supernodal<'a>(symbolic: &'a SymbolicCholesky<usize>, factor: &'a [f64]) -> Option<SupernodalLltRef<'a, usize, f64>> {
+fn supernodal<'a>(symbolic: &'a SymbolicCholesky<u32>, factor: &'a [f64]) -> Option<SupernodalLltRef<'a, u32, f64>> {
     match symbolic.raw() {
         SymbolicCholeskyRaw::Supernodal(symbolic) => Some(SupernodalLltRef::new(symbolic, factor)),
         SymbolicCholeskyRaw::Simplicial(_) => None,
@@ -206,16 +211,21 @@ fn counting_sort(n: usize, key: &[usize], order: Vec<usize>) -> Vec<usize> {
     sorted
 }
 
-/// CSC pattern from (column, row) pairs sorted by column, then row.
-fn triangle_pattern(n: usize, entries: impl Iterator<Item = (usize, usize)>) -> SymbolicSparseColMat<usize> {
-    let mut col_ptr = vec![0usize; n + 1];
+/// CSC pattern from (column, row) pairs sorted by column, then row (`n` and the pair count below
+/// [`INDEX_LIMIT`]).
+fn triangle_pattern(n: usize, entries: impl Iterator<Item = (usize, usize)>) -> SymbolicSparseColMat<u32> {
+    let mut col_ptr = vec![0u32; n + 1];
     let mut row_idx = Vec::new();
     for (col, row) in entries {
         col_ptr[col + 1] += 1;
-        row_idx.push(row);
+        row_idx.push(row as u32);
     }
     for c in 0..n {
         col_ptr[c + 1] += col_ptr[c];
     }
     SymbolicSparseColMat::new_checked(n, n, col_ptr, None, row_idx)
 }
+
+/// Dimensions and entry counts of a domain's matrix must stay below this: faer's 32-bit indices
+/// are signed-safe up to 2³¹ − 1.
+const INDEX_LIMIT: usize = i32::MAX as usize;
