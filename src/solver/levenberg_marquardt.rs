@@ -43,8 +43,8 @@ pub struct LevenbergMarquardt {
     trial_x: Vec<f64>,
     mu: Option<f64>,
     nu: f64,
-    /// The problem's constant-Jacobian revision whose Jacobians and Gram products the slots of
-    /// the constant blocks hold (`None` before the first evaluation or after a failed one).
+    /// The problem's constant-Jacobian revision whose Gram products the slots of the constant
+    /// blocks hold (`None` before the first evaluation or after a failed one).
     constant_revision: Option<u64>,
 }
 
@@ -129,8 +129,8 @@ impl LevenbergMarquardt {
 
     /// One Levenberg–Marquardt iteration at x (x updated in place only if a step is accepted).
     ///
-    /// Evaluates residuals and Jacobians at x (the Jacobians of constant blocks once per revision
-    /// of the problem, see [`LeastSquaresProblem::block_jacobian_is_constant`]), solves
+    /// Evaluates residuals and Jacobians at x (the Gram products of constant blocks once per
+    /// revision of the problem, see [`LeastSquaresProblem::block_jacobian_is_constant`]), solves
     /// (JᵀJ + μI) h = −Jᵀr (Schur-reduced), and
     /// accepts h when the gain ratio ρ = (E(x) − E(x+h)) / (L(0) − L(h)) is positive, with
     /// L(0) − L(h) = hᵀ(μh − Jᵀr) for E = ‖r‖². Accepted: μ ← μ·max(1/3, 1 − (2ρ − 1)³), ν ← 2;
@@ -148,7 +148,7 @@ impl LevenbergMarquardt {
     fn iterate_here<P: LeastSquaresProblem>(&mut self, problem: &P, x: &mut [f64]) -> Result<IterationOutcome, SolverError> {
         self.check_unchanged(problem, x)?;
         self.accepted = false;
-        // The constant blocks' Jacobians and Grams are evaluated once per revision.
+        // The constant blocks' Gram products are formed once per revision.
         let revision = problem.constant_jacobian_revision();
         let reuse_constant = self.constant_revision == Some(revision);
         self.constant_revision = None;

@@ -18,9 +18,9 @@ pub trait LeastSquaresProblem: Sync {
     fn evaluate_block(&self, b: usize, x: &[f64], residuals: &mut [f64], jacobian: Option<&mut [f64]>);
     /// Whether block `b`'s residuals are linear in x, so that its Jacobian does not depend on x
     /// (it may depend on the problem's weights; see [`Self::constant_jacobian_revision`]). The
-    /// solver then evaluates its Jacobian and Gram product once and reuses them, evaluating only
-    /// the residuals, while the revision stays the same (blocks touching a local group are
-    /// evaluated in full every iteration all the same: their Jacobians are not stored).
+    /// solver then forms its Gram product JᵀJ once and reuses it while the revision stays the
+    /// same, evaluating only residuals and Jᵀr (blocks touching a local group are accumulated in
+    /// full every iteration all the same).
     /// Default: no block is.
     fn block_jacobian_is_constant(&self, _b: usize) -> bool {
         false

@@ -1,7 +1,7 @@
 //! Blocks with constant Jacobians (`LeastSquaresProblem::block_jacobian_is_constant`): the solver
-//! evaluates their Jacobians and Gram products once per revision of the problem and then only
-//! their residuals, with the same iterates bit for bit as when it evaluates them every time,
-//! also where varying global blocks share their entries of the normal matrix.
+//! forms their Gram products once per revision of the problem and then only their residuals and
+//! Jᵀr, with the same iterates bit for bit as when it forms everything every time, also where
+//! varying global blocks share their entries of the normal matrix.
 use lamella::solver::{new_revision, LeastSquaresProblem, LevenbergMarquardt, LmOptions, VariableLayout};
 
 /// Points p_i ∈ R² (local groups of 2) on the unit circle, coupled to a chain of global scalars
@@ -140,8 +140,8 @@ fn constant_jacobians_give_the_same_iterates_bit_for_bit() {
 
 #[test]
 fn constant_jacobians_are_reused_until_the_revision_changes() {
-    // Without a new revision the solver keeps the Jacobians of weight 0.5 after the change to
-    // 2.0: from then on its steps differ from those of fresh Jacobians.
+    // Without a new revision the solver keeps the Gram products of weight 0.5 after the change
+    // to 2.0: from then on its steps differ from those of fresh ones.
     let stale = run(Chain::new(40, true, false), 8, 2.0, false);
     let evaluated = run(Chain::new(40, false, false), 8, 2.0, false);
     assert_eq!(stale[..5], evaluated[..5]);
