@@ -57,7 +57,7 @@ impl LevenbergMarquardt {
         let (blocks, groups) = analyse(problem)?;
         let mut pattern = NormalPattern::build(&blocks, &groups)?;
         let cholesky = if pattern.dimension() > 0 {
-            let cholesky = SubstructuredCholesky::analyse(&pattern.col_ptr, &pattern.row_idx)?;
+            let mut cholesky = SubstructuredCholesky::analyse(&pattern.col_ptr, &pattern.row_idx)?;
             // The reduced matrix is assembled directly in the factorisations' storage order.
             let storage = cholesky.storage_positions(pattern.row_idx.len());
             pattern.assign_storage(&blocks, &groups, &storage, &cholesky.domains_of_variables())?;
@@ -67,6 +67,7 @@ impl LevenbergMarquardt {
         };
         let systems = GroupSystems::new(&blocks, &groups);
         let gather = ReducedGather::new(&mut pattern, &groups, &systems)?;
+        pattern.free_rows();
         let n = blocks.variable_count;
         let nnz = pattern.storage_len();
         Ok(Self {

@@ -7,6 +7,8 @@ use super::structure::{BlockStructure, GroupStructure};
 use super::SolverError;
 
 pub(crate) struct NormalPattern {
+    /// The upper triangle's columns; their rows are read only while the solver is set up
+    /// ([`Self::free_rows`]).
     pub col_ptr: Vec<usize>,
     pub row_idx: Vec<usize>,
     /// Position of the diagonal entry of each column; after [`Self::assign_storage`], every
@@ -144,6 +146,12 @@ impl NormalPattern {
         }
         self.diagonal = diagonal;
         Ok(())
+    }
+
+    /// Frees the upper triangle's rows once the factorisation's analysis, the storage and the
+    /// gather are set up (nothing reads them later; [`Self::dimension`] stays).
+    pub fn free_rows(&mut self) {
+        self.row_idx = Vec::new();
     }
 
     /// Number of value positions (after [`Self::assign_storage`]: of the domain storage).

@@ -26,8 +26,11 @@ pub(crate) struct SparseCholesky {
     /// Lower triangle of P A Pᵀ (CSC, sorted rows). Indices, here and in the symbolic analysis,
     /// are 32-bit: half the memory of the pattern and of the factor's row structure.
     permuted_pattern: SymbolicSparseColMat<u32>,
-    /// `values[p]` (the caller's storage) = entry `original_position[p]` of the caller's pattern.
+    /// `values[p]` (the caller's storage) = entry `original_position[p]` of the caller's pattern;
+    /// handed over by [`Self::take_original_positions`] (only the setup reads it).
     original_position: Vec<usize>,
+    /// Number of values of the permuted storage.
+    value_count: usize,
     /// `variables[i]`: the caller's variable at position `i` of the factor's order.
     variables: Vec<usize>,
     separator_len: usize,
@@ -108,6 +111,7 @@ impl SparseCholesky {
         Ok(Self {
             permuted_pattern,
             original_position: lower_order.iter().map(|&e| entries[e].0).collect(),
+            value_count: lower_order.len(),
             variables,
             separator_len: separator.len(),
             factor: vec![0.0; symbolic.len_val()],
@@ -116,9 +120,15 @@ impl SparseCholesky {
         })
     }
 
-    /// For each value of the permuted storage, its position in the caller's pattern.
-    pub fn original_positions(&self) -> &[usize] {
-        &self.original_position
+    /// For each value of the permuted storage, its position in the caller's pattern (handed over
+    /// once: afterwards empty).
+    pub fn take_original_positions(&mut self) -> Vec<usize> {
+        std::mem::take(&mut self.original_position)
+    }
+
+    /// Number of values of the permuted storage.
+    pub fn value_count(&self) -> usize {
+        self.value_count
     }
 
     /// The caller's variable at each position of the factor's order (interior, then separator).
@@ -127,8 +137,8 @@ impl SparseCholesky {
     }
 
     /// Numeric factorisation of the matrix whose permuted storage is `values` (`values[p]` is the
-    /// entry at [`Self::original_positions`]`[p]`). Returns `false` if it is not numerically
-    /// positive definite.
+    /// entry at position `p` of [`Self::take_original_positions`] in the caller's pattern).
+    /// Returns `false` if it is not numerically positive definite.
     pub fn factorize(&mut self, values: &[f64]) -> bool {
         let matrix = SparseColMatRef::new(self.permuted_pattern.as_ref(), values);
         self.symbolic

@@ -71,7 +71,7 @@ impl SubstructuredCholesky {
         let mut offset = 0;
         for domain in &mut domains {
             domain.offset = offset;
-            offset += domain.cholesky.original_positions().len();
+            offset += domain.cholesky.value_count();
         }
         let s = separator.len();
         let dense_scratch = MemBuffer::try_new(StackReq::or(
@@ -92,12 +92,13 @@ impl SubstructuredCholesky {
 
     /// For each domain, the storage position of every entry of the caller's pattern that
     /// belongs to it (`usize::MAX` for the others): `original_count` is the pattern's length.
-    pub fn storage_positions(&self, original_count: usize) -> Vec<Vec<usize>> {
+    /// Asked once, when the caller sets up its assembly (the maps it is made from are freed).
+    pub fn storage_positions(&mut self, original_count: usize) -> Vec<Vec<usize>> {
         self.domains
-            .iter()
+            .iter_mut()
             .map(|domain| {
                 let mut position = vec![usize::MAX; original_count];
-                for (p, &t) in domain.cholesky.original_positions().iter().enumerate() {
+                for (p, &t) in domain.cholesky.take_original_positions().iter().enumerate() {
                     position[t] = domain.offset + p;
                 }
                 position
@@ -231,7 +232,7 @@ impl Domain {
 
     /// Numeric factorisation of the domain matrix, then R⁽ᵈ⁾ and R⁽ᵈ⁾R⁽ᵈ⁾ᵀ.
     fn factorize(&mut self, values: &[f64]) -> bool {
-        let len = self.cholesky.original_positions().len();
+        let len = self.cholesky.value_count();
         if !self.cholesky.factorize(&values[self.offset..self.offset + len]) {
             return false;
         }
@@ -374,14 +375,14 @@ mod tests {
     /// Storage positions and domains of the variables, as the solver's assembly uses them.
     type Layout = (Vec<Vec<usize>>, Vec<Option<usize>>);
 
-    fn layout(cholesky: &SubstructuredCholesky, nnz: usize) -> Layout {
+    fn layout(cholesky: &mut SubstructuredCholesky, nnz: usize) -> Layout {
         (cholesky.storage_positions(nnz), cholesky.domains_of_variables())
     }
 
     fn solve(problem: &QuadProblem) -> (SubstructuredCholesky, Vec<f64>, Vec<f64>) {
         let (col_ptr, row_idx) = problem.pattern();
         let mut cholesky = SubstructuredCholesky::analyse(&col_ptr, &row_idx).unwrap();
-        let layout = layout(&cholesky, row_idx.len());
+        let layout = layout(&mut cholesky, row_idx.len());
         assert!(cholesky.factorize_with(|values| problem.fill(&layout, &col_ptr, &row_idx, values)));
         let b: Vec<f64> = (0..problem.n).map(|i| ((i * 37 % 23) as f64 - 11.0) / 7.0).collect();
         let mut x = b.clone();
@@ -418,7 +419,7 @@ mod tests {
         let problem = QuadProblem::new(40, 25, -0.5);
         let (col_ptr, row_idx) = problem.pattern();
         let mut cholesky = SubstructuredCholesky::analyse(&col_ptr, &row_idx).unwrap();
-        let layout = layout(&cholesky, row_idx.len());
+        let layout = layout(&mut cholesky, row_idx.len());
         assert!(!cholesky.factorize_with(|values| problem.fill(&layout, &col_ptr, &row_idx, values)));
     }
 
