@@ -20,7 +20,8 @@ pub trait LeastSquaresProblem: Sync {
     /// (it may depend on the problem's weights; see [`Self::constant_jacobian_revision`]). The
     /// solver then forms its Gram product JᵀJ once and reuses it while the revision stays the
     /// same, evaluating only residuals and Jᵀr (blocks touching a local group are accumulated in
-    /// full every iteration all the same).
+    /// full every iteration all the same). Fixed for the life of the problem, like the block's
+    /// variables: a block that turned constant would reuse a Gram product formed elsewhere.
     /// Default: no block is.
     fn block_jacobian_is_constant(&self, _b: usize) -> bool {
         false

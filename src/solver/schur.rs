@@ -36,9 +36,9 @@ use super::{LeastSquaresProblem, SolverError};
 /// variables), sized once, one segment per group in one buffer.
 ///
 /// A segment holds, in this order: D_L, after elimination its Cholesky factor L (lower triangle
-/// of k×k packed row by row); [C_L | g_L], after elimination [Z | z] (k×(q+1)); G_L, after elimination
-/// W − G_L (upper triangle of q×q packed row by row, the order of the pattern's Schur targets);
-/// v (q); and the residuals and Jᵀr of each of the group's blocks, in block order (m + n each).
+/// of k×k packed row by row); [C_L | g_L], after elimination [Z | z] (k×(q+1)); G_L, after
+/// elimination W − G_L (upper triangle of q×q packed row by row, the order of the pattern's Schur
+/// targets); v (q); and the residuals and Jᵀr of each of the group's blocks, in block order (m + n each).
 /// All row-major. (A block's Jacobian and the dense row being accumulated live in a per-thread
 /// scratch, not in the segment.)
 pub(crate) struct GroupSystems {

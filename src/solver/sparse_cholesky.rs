@@ -29,8 +29,6 @@ pub(crate) struct SparseCholesky {
     /// `values[p]` (the caller's storage) = entry `original_position[p]` of the caller's pattern;
     /// handed over by [`Self::take_original_positions`] (only the setup reads it).
     original_position: Vec<usize>,
-    /// Number of values of the permuted storage.
-    value_count: usize,
     /// `variables[i]`: the caller's variable at position `i` of the factor's order.
     variables: Vec<usize>,
     separator_len: usize,
@@ -111,7 +109,6 @@ impl SparseCholesky {
         Ok(Self {
             permuted_pattern,
             original_position: lower_order.iter().map(|&e| entries[e].0).collect(),
-            value_count: lower_order.len(),
             variables,
             separator_len: separator.len(),
             factor: vec![0.0; symbolic.len_val()],
@@ -128,7 +125,7 @@ impl SparseCholesky {
 
     /// Number of values of the permuted storage.
     pub fn value_count(&self) -> usize {
-        self.value_count
+        self.permuted_pattern.row_idx().len()
     }
 
     /// The caller's variable at each position of the factor's order (interior, then separator).
