@@ -55,6 +55,10 @@ pub struct Web {
     pub polylines: [Vec<(usize, Vec<u32>)>; 3],
 }
 
+/// Relative tolerance below which a field's range counts as a whole number of paces
+/// ([`web_levels`]).
+const PACE_ROUNDING: f64 = 1e-9;
+
 /// The even-pace levels of a 3-web of the fields `f`, `h` (the first two families) and `g` (the
 /// third, ≈ `−f − h`), with about `counts[0]` levels of `f` and `counts[1]` of `h`: the pace is
 /// the smaller of `range / (count + 1)`, each field's levels spread over its range at that pace,
@@ -77,8 +81,12 @@ pub fn web_levels(mesh: &TriMesh, f: &[f64], h: &[f64], g: &[f64], counts: [usiz
     let mut levels: [Vec<f64>; 3] = Default::default();
     for k in 0..2 {
         let (low, high) = ranges[k];
-        // The levels strictly inside the range at this pace, centred in it.
-        let count = (((high - low) / pace).ceil() as usize).saturating_sub(1).clamp(1, crate::curves::MAX_LEVELS);
+        // The levels strictly inside the range at this pace, centred in it. The family that set
+        // the pace spans exactly `counts[k] + 1` paces, which the division may return a last bit
+        // above: a quotient within `PACE_ROUNDING` of a whole number counts as that number, so that
+        // a field's last bits never add a row of levels.
+        let paces = (high - low) / pace;
+        let count = (((paces - PACE_ROUNDING * paces).ceil()) as usize).saturating_sub(1).clamp(1, crate::curves::MAX_LEVELS);
         first[k] = low + 0.5 * ((high - low) - (count - 1) as f64 * pace);
         levels[k] = (0..count).map(|i| first[k] + i as f64 * pace).collect();
     }

@@ -209,3 +209,33 @@ fn invalid_web_requests_are_refused_by_name() {
     assert!(web_levels(&mesh, &x, &y, &constant, [5, 5], false).is_err());
     assert!(web_levels(&mesh, &x, &y, &x, [0, 5], false).is_err());
 }
+
+/// The field that sets the pace spans `count + 1` paces exactly; its levels number `count` even
+/// where the division rounds a last bit up (a range of 2.1 over 7 paces gives 7.000000000000001),
+/// so last-bit changes of the fields never add a row to the web.
+#[test]
+fn the_field_that_sets_the_pace_gets_the_levels_asked_for() {
+    let mesh = hypar(300);
+    let [x, y]: [Vec<f64>; 2] = [0, 1].map(|k| mesh.positions().iter().map(|p| p[k]).collect());
+    let unit = |values: &[f64], range: f64| -> Vec<f64> {
+        let (low, high) = values.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &v| (l.min(v), h.max(v)));
+        values.iter().map(|&v| (v - low) / (high - low) * range).collect()
+    };
+    let mut rounded_up = 0;
+    for tenths in 1..200 {
+        let range = 0.1 * tenths as f64;
+        for count in [3, 6, 11] {
+            rounded_up += usize::from(range / (range / (count + 1) as f64) > (count + 1) as f64);
+            // The first field sets the pace: the second spans 1.5 times its range.
+            let (f, h) = (unit(&x, range), unit(&y, 1.5 * range));
+            let g: Vec<f64> = f.iter().zip(&h).map(|(a, b)| -a - b).collect();
+            let levels = web_levels(&mesh, &f, &h, &g, [count, count], false).expect("levels");
+            assert_eq!(levels.levels[0].len(), count, "range {range}, {count} levels asked");
+            let (first, last) = (levels.levels[0][0], levels.levels[0][count - 1]);
+            // Centred: a pace from each end of the range.
+            assert!((first - levels.pace).abs() <= 1e-12 * range && (range - last - levels.pace).abs() <= 1e-12 * range, "range {range}: {first}..{last}");
+        }
+    }
+    // The cases this guards against occur among these ranges.
+    assert!(rounded_up > 0);
+}
