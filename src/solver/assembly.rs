@@ -3,11 +3,57 @@
 //! searching).
 use rayon::prelude::*;
 
-use super::evaluation::{squared_norm, sum_in_block_order};
+use super::evaluation::{squared_norm, sum_in_block_order, with_jacobian_scratch};
 use super::normal_pattern::{check_positions, NormalPattern};
+use super::packed_upper::add_outer_product;
 use super::schur::GroupSystems;
-use super::structure::{BlockStructure, GroupStructure};
-use super::SolverError;
+use super::structure::{triangle_len, BlockStructure, GroupStructure};
+use super::{LeastSquaresProblem, SolverError};
+
+/// The share of H_GG = J_GᵀJ_G of the blocks without a local group whose Jacobian is constant
+/// ([`LeastSquaresProblem::block_jacobian_is_constant`]): summed once per revision of the
+/// problem's constant Jacobians, in block order, and the values H_GG starts from every
+/// iteration. Those blocks keep no Gram products of their own.
+pub(crate) struct ConstantHessian {
+    values: Vec<f64>,
+    /// One block's residuals and packed Gram product (scratch of [`Self::refresh`]).
+    residuals: Vec<f64>,
+    gram: Vec<f64>,
+}
+
+impl ConstantHessian {
+    pub fn new(pattern: &NormalPattern) -> Self {
+        Self { values: vec![0.0; pattern.storage_len()], residuals: Vec::new(), gram: Vec::new() }
+    }
+
+    /// Sums the constant blocks' Gram products, each formed row by row from its Jacobian at `x`
+    /// as [`super::evaluation::evaluate_slots`] forms the other blocks', in block order. The
+    /// Jacobians are those [`super::evaluation::evaluate_slots`] has just checked at the same
+    /// revision (finite).
+    pub fn refresh<P: LeastSquaresProblem>(&mut self, problem: &P, structure: &BlockStructure, pattern: &NormalPattern, x: &[f64]) {
+        self.values.fill(0.0);
+        for b in (0..structure.block_count()).filter(|&b| structure.constant_jacobian[b] && structure.group[b].is_none()) {
+            let n = structure.variables(b).len();
+            if n == 0 {
+                continue;
+            }
+            let (residuals, gram) = (&mut self.residuals, &mut self.gram);
+            with_jacobian_scratch(|jacobian| {
+                residuals.clear();
+                residuals.resize(structure.residual_count(b), 0.0);
+                jacobian.clear();
+                jacobian.resize(residuals.len() * n, 0.0);
+                problem.evaluate_block(b, x, residuals, Some(jacobian));
+                gram.clear();
+                gram.resize(triangle_len(n), 0.0);
+                for row in jacobian.chunks_exact(n) {
+                    add_outer_product(row, gram);
+                }
+            });
+            add_gram(pattern, b, &self.gram, &mut self.values);
+        }
+    }
+}
 
 /// Adds block `b`'s packed Gram product `gram` to the values of H_GG.
 fn add_gram(pattern: &NormalPattern, b: usize, gram: &[f64], hessian: &mut [f64]) {
@@ -20,22 +66,25 @@ fn add_gram(pattern: &NormalPattern, b: usize, gram: &[f64], hessian: &mut [f64]
 /// Sums the blocks' products in block order (from the slots, and for the blocks of a local
 /// group from their group's segment): returns E(x), and writes the full gradient g = Jᵀr and
 /// the values of H_GG = J_GᵀJ_G of the blocks without a local group on the normal pattern (the
-/// groups' blocks add theirs through [`GroupSystems`]), in block order.
+/// groups' blocks add theirs through [`GroupSystems`]): the constant blocks' share
+/// `constant_hessian`, plus the other blocks' Gram products in block order.
 pub(crate) fn reduce_blocks(
     structure: &BlockStructure,
     pattern: &NormalPattern,
     slots: &[f64],
     systems: &GroupSystems,
+    constant_hessian: &ConstantHessian,
     gradient: &mut [f64],
     hessian: &mut [f64],
 ) -> f64 {
     gradient.fill(0.0);
-    hessian.fill(0.0);
+    hessian.copy_from_slice(&constant_hessian.values);
     let norms = (0..structure.block_count()).map(|b| {
         let (residuals, block_gradient) = match structure.group[b] {
             Some(_) => systems.block_products(structure, b),
             None => {
                 let slot = structure.slot(b, slots);
+                // Empty for a constant block (its share is in `constant_hessian`).
                 add_gram(pattern, b, slot.gram, hessian);
                 (slot.residuals, slot.gradient)
             }

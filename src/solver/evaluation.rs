@@ -48,11 +48,11 @@ pub(crate) fn jacobian_transpose_times(jacobian: &[f64], residuals: &[f64], grad
 }
 
 /// Evaluates every block without a local group at `x` into its slot: residuals, Jᵀr and the
-/// Gram products of its columns, from its Jacobian evaluated into a per-thread scratch. With
-/// `reuse_constant`, the blocks whose Jacobian is constant
-/// ([`LeastSquaresProblem::block_jacobian_is_constant`]) keep the Gram products already in their
-/// slots (evaluated at the same revision); the slots hold the same values, bit for bit, as a full
-/// evaluation would write. Errors name the lowest non-finite block.
+/// Gram products of its columns, from its Jacobian evaluated into a per-thread scratch. Blocks
+/// whose Jacobian is constant ([`LeastSquaresProblem::block_jacobian_is_constant`]) get no Gram
+/// products here (see [`super::assembly::ConstantHessian`]); with `reuse_constant` (their
+/// Jacobian was checked at the same revision) their Jacobian is not checked again. Errors name
+/// the lowest non-finite block.
 pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
     problem: &P,
     structure: &BlockStructure,
@@ -72,7 +72,7 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
             jacobian.resize(s.residuals.len() * n, 0.0);
             problem.evaluate_block(b, x, s.residuals, Some(jacobian));
             // A constant Jacobian reused at its revision was checked when it was first evaluated.
-            let reused = reuse_constant && problem.block_jacobian_is_constant(b);
+            let reused = reuse_constant && structure.constant_jacobian[b];
             if !(s.residuals.iter().all(|v| v.is_finite()) && (reused || jacobian.iter().all(|v| v.is_finite()))) {
                 return false;
             }
@@ -81,10 +81,10 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
             }
             // Jᵀr and the upper Gram of the global columns (in the order of the pattern's gram
             // targets), accumulated row by row; structurally zero entries are skipped. Only
-            // blocks without a local group have a Gram part, and all their variables are global,
-            // so its columns are the row's own entries in order.
+            // blocks without a local group and with a varying Jacobian have a Gram part, and all
+            // their variables are global, so its columns are the row's own entries in order.
             jacobian_transpose_times(jacobian, s.residuals, s.gradient);
-            if !reused && !s.gram.is_empty() {
+            if !s.gram.is_empty() {
                 debug_assert!(structure.global_positions(b).iter().enumerate().all(|(i, &p)| p as usize == i));
                 s.gram.fill(0.0);
                 for row in jacobian.chunks_exact(n) {

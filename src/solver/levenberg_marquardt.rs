@@ -2,7 +2,7 @@
 //! D = I) on the sparse normal equations, with Schur elimination of local variable groups.
 //! Used for the level-set field optimisation of the paper (Sec. 3.2.2, Eq. 8–12).
 
-use super::assembly::{reduce_blocks, ReducedGather, ReducedSystem};
+use super::assembly::{reduce_blocks, ConstantHessian, ReducedGather, ReducedSystem};
 use super::evaluation::{evaluate_energy_into, evaluate_energy_standalone, evaluate_slots};
 use super::normal_pattern::NormalPattern;
 use super::schur::GroupSystems;
@@ -37,14 +37,17 @@ pub struct LevenbergMarquardt {
     accepted: bool,
     gradient: Vec<f64>,
     hessian: Vec<f64>,
+    /// The constant blocks' share of `hessian`, summed at `constant_revision`.
+    constant_hessian: ConstantHessian,
     /// diag(JᵀJ) over the global variables (scratch of [`Self::initial_damping`]).
     global_diagonal: Vec<f64>,
     step: Vec<f64>,
     trial_x: Vec<f64>,
     mu: Option<f64>,
     nu: f64,
-    /// The problem's constant-Jacobian revision whose Gram products the slots of the constant
-    /// blocks hold (`None` before the first evaluation or after a failed one).
+    /// The problem's constant-Jacobian revision `constant_hessian` was summed at and the
+    /// constant blocks' Jacobians were checked at (`None` before the first evaluation or after a
+    /// failed one).
     constant_revision: Option<u64>,
 }
 
@@ -66,6 +69,7 @@ impl LevenbergMarquardt {
             None
         };
         let systems = GroupSystems::new(&blocks, &groups);
+        let constant_hessian = ConstantHessian::new(&pattern);
         let gather = ReducedGather::new(&mut pattern, &groups, &systems)?;
         pattern.free_rows();
         let n = blocks.variable_count;
@@ -79,6 +83,7 @@ impl LevenbergMarquardt {
             accepted: false,
             gradient: vec![0.0; n],
             hessian: vec![0.0; nnz],
+            constant_hessian,
             global_diagonal: vec![0.0; blocks.global_count],
             step: vec![0.0; n],
             trial_x: vec![0.0; n],
@@ -149,7 +154,7 @@ impl LevenbergMarquardt {
     fn iterate_here<P: LeastSquaresProblem>(&mut self, problem: &P, x: &mut [f64]) -> Result<IterationOutcome, SolverError> {
         self.check_unchanged(problem, x)?;
         self.accepted = false;
-        // The constant blocks' Gram products are formed once per revision.
+        // The constant blocks' share of H_GG is summed once per revision.
         let revision = problem.constant_jacobian_revision();
         let reuse_constant = self.constant_revision == Some(revision);
         self.constant_revision = None;
@@ -167,12 +172,16 @@ impl LevenbergMarquardt {
             )
         };
         let eliminated = lowest_block_error(evaluated, eliminated)?;
+        if !reuse_constant {
+            self.constant_hessian.refresh(problem, &self.blocks, &self.pattern, x);
+        }
         self.constant_revision = Some(revision);
         let energy = reduce_blocks(
             &self.blocks,
             &self.pattern,
             &self.slots,
             &self.systems,
+            &self.constant_hessian,
             &mut self.gradient,
             &mut self.hessian,
         );
@@ -325,6 +334,7 @@ impl LevenbergMarquardt {
         for b in 0..self.blocks.block_count() {
             if problem.block_residual_count(b) != self.blocks.residual_count(b)
                 || problem.block_variables(b) != self.blocks.variables(b)
+                || problem.block_jacobian_is_constant(b) != self.blocks.constant_jacobian[b]
             {
                 return changed(format!("structure of block {b} changed"));
             }

@@ -21,8 +21,8 @@ pub trait LeastSquaresProblem: Sync {
     /// solver then forms its Gram product JᵀJ once and reuses it while the revision stays the
     /// same, evaluating only residuals and Jᵀr (blocks touching a local group are accumulated in
     /// full every iteration all the same). Fixed for the life of the problem, like the block's
-    /// variables: a block that turned constant would reuse a Gram product formed elsewhere.
-    /// Default: no block is.
+    /// variables (it decides how the block is stored; the solver refuses a problem whose answer
+    /// changed with [`super::SolverError::ProblemChanged`]). Default: no block is.
     fn block_jacobian_is_constant(&self, _b: usize) -> bool {
         false
     }

@@ -14,7 +14,8 @@ pub(crate) struct BlockStructure {
     /// `slot_ptr[b]..slot_ptr[b+1]`: block `b`'s evaluation slot, laid out as
     /// [residuals m | Jᵀr n | upper-triangular Gram of global columns].
     /// Blocks of a local group have an empty slot: they are evaluated into their group's system
-    /// (see [`super::schur::GroupSystems`]).
+    /// (see [`super::schur::GroupSystems`]). Blocks with a constant Jacobian have no Gram part:
+    /// their share of H_GG is summed once per revision (see [`super::assembly::ConstantHessian`]).
     pub slot_ptr: Vec<usize>,
     /// Positions (within the block's variable list) of its global variables.
     pub global_ptr: Vec<usize>,
@@ -29,6 +30,9 @@ pub(crate) struct BlockStructure {
     pub local_offsets: Vec<u32>,
     /// The local group touched by each block.
     pub group: Vec<Option<u32>>,
+    /// Whether each block's Jacobian is constant
+    /// ([`LeastSquaresProblem::block_jacobian_is_constant`], recorded when the solver is built).
+    pub constant_jacobian: Vec<bool>,
 }
 
 /// Local-group structure (CSR-like flat arrays indexed by group).
@@ -159,6 +163,7 @@ pub(crate) fn analyse<P: LeastSquaresProblem>(problem: &P) -> Result<(BlockStruc
         local_positions: Vec::new(),
         local_offsets: Vec::new(),
         group: Vec::with_capacity(block_count),
+        constant_jacobian: Vec::with_capacity(block_count),
     };
     let mut seen = vec![usize::MAX; n];
     let mut group_block_count = vec![0usize; group_count];
@@ -192,8 +197,10 @@ pub(crate) fn analyse<P: LeastSquaresProblem>(problem: &P) -> Result<(BlockStruc
             }
         }
         let too_large = || invalid(b, "block too large".to_string());
+        let constant = problem.block_jacobian_is_constant(b);
         let slot_len = match group {
             Some(_) => 0,
+            None if constant => m + vars.len(),
             None => (m + vars.len()).checked_add(triangle_len(global_count)).ok_or_else(too_large)?,
         };
         let last_slot = s.slot_ptr[b];
@@ -207,6 +214,7 @@ pub(crate) fn analyse<P: LeastSquaresProblem>(problem: &P) -> Result<(BlockStruc
             group_block_count[l] += 1;
         }
         s.group.push(group.map(|l| l as u32));
+        s.constant_jacobian.push(constant);
     }
     s.coupling_index = vec![0; s.global_positions.len()];
 
