@@ -53,8 +53,9 @@ type CoefficientPartials = [Vec3; COEFFICIENTS];
 pub(crate) struct JetStencils {
     offsets: Vec<usize>,
     vertices: Vec<u32>,
-    /// `∂(c, a, b, A, B, C)/∂F_u` for each stencil vertex `u`.
-    weights: Vec<[f64; UNKNOWNS]>,
+    /// `∂(a, b, A, B, C)/∂F_u` for each stencil vertex `u` (the fit's constant is not kept:
+    /// nothing reads it).
+    weights: Vec<[f64; COEFFICIENTS]>,
     /// Per owner, the rows of `E_fit`: an orthonormal basis `L` of what the quadratic fit cannot
     /// represent (`LᵀL = I − H`, `H` the fit's hat matrix), `(m − 6) × m` row-major.
     residual_operators: Vec<f64>,
@@ -69,7 +70,7 @@ pub(crate) struct JetStencils {
 pub(crate) struct JetStencil<'a> {
     /// The stencil's vertices (the owner among them), in the order of the block's field columns.
     pub vertices: &'a [u32],
-    weights: &'a [[f64; UNKNOWNS]],
+    weights: &'a [[f64; COEFFICIENTS]],
     residual_operator: &'a [f64],
     quadric: &'a LocalQuadric,
     scale: f64,
@@ -79,11 +80,13 @@ impl JetStencils {
     /// Stencils for `owners` (vertices of `mesh`), each with its vertex's local quadric.
     pub fn new(mesh: &TriMesh, owners: &[u32], quadrics: &[LocalQuadric]) -> JetStencils {
         let built: Vec<FieldFit> = owners.par_iter().zip(quadrics).map(|(&v, quadric)| field_fit(mesh, quadric, v as usize)).collect();
-        let mut stencils = JetStencils::empty();
+        let stencil_len = built.iter().map(|fit| fit.vertices.len()).sum();
+        let operator_len = built.iter().map(|fit| fit.residual_operator.len()).sum();
+        let mut stencils = JetStencils::with_capacity(owners.len(), stencil_len, operator_len);
         stencils.quadrics = quadrics.to_vec();
         for (&v, fit) in owners.iter().zip(built) {
             stencils.vertices.extend(fit.vertices);
-            stencils.weights.extend(fit.weights);
+            stencils.weights.extend(fit.weights.iter().map(|w| std::array::from_fn::<f64, COEFFICIENTS, _>(|c| w[c + 1])));
             stencils.residual_operators.extend(fit.residual_operator);
             stencils.residual_offsets.push(stencils.residual_operators.len());
             stencils.offsets.push(stencils.vertices.len());
@@ -92,21 +95,32 @@ impl JetStencils {
         stencils
     }
 
-    fn empty() -> JetStencils {
+    /// No stencils yet, room for `owners` of them with `stencil_len` vertices and
+    /// `operator_len` residual-operator entries in all (the stencils' arrays are the bulk of a
+    /// field problem's memory: sized exactly, not grown).
+    fn with_capacity(owners: usize, stencil_len: usize, operator_len: usize) -> JetStencils {
+        let mut offsets = Vec::with_capacity(owners + 1);
+        offsets.push(0);
+        let mut residual_offsets = Vec::with_capacity(owners + 1);
+        residual_offsets.push(0);
         JetStencils {
-            offsets: vec![0],
-            vertices: Vec::new(),
-            weights: Vec::new(),
-            residual_operators: Vec::new(),
-            residual_offsets: vec![0],
-            quadrics: Vec::new(),
-            scales: Vec::new(),
+            offsets,
+            vertices: Vec::with_capacity(stencil_len),
+            weights: Vec::with_capacity(stencil_len),
+            residual_operators: Vec::with_capacity(operator_len),
+            residual_offsets,
+            quadrics: Vec::with_capacity(owners),
+            scales: Vec::with_capacity(owners),
         }
     }
 
     /// The stencils of the owners at positions `keep` (increasing), in that order.
     pub fn select(&self, keep: &[u32]) -> JetStencils {
-        let mut selected = JetStencils::empty();
+        let (stencil_len, operator_len) = keep.iter().fold((0, 0), |(s, o), &k| {
+            let k = k as usize;
+            (s + self.offsets[k + 1] - self.offsets[k], o + self.residual_offsets[k + 1] - self.residual_offsets[k])
+        });
+        let mut selected = JetStencils::with_capacity(keep.len(), stencil_len, operator_len);
         for &k in keep {
             let k = k as usize;
             let range = self.offsets[k]..self.offsets[k + 1];
@@ -235,7 +249,7 @@ impl JetVector {
     pub fn add_dot_partials(&self, stencil: &JetStencil, c: &Vec3, row: &mut [f64]) {
         let by_coefficient: [f64; COEFFICIENTS] = std::array::from_fn(|i| c.dot(&self.partials[i]));
         for (r, w) in row.iter_mut().zip(stencil.weights) {
-            *r += by_coefficient.iter().zip(&w[1..]).map(|(d, w)| d * w).sum::<f64>();
+            *r += by_coefficient.iter().zip(w).map(|(d, w)| d * w).sum::<f64>();
         }
     }
 }
@@ -270,7 +284,7 @@ impl LevelJet {
         }
         let reference = field[stencil.vertices[0] as usize];
         let spread = stencil.vertices.iter().fold(0.0f64, |m, &u| m.max((field[u as usize] - reference).abs()));
-        let [_, a, b, hxx, hxy, hyy] = stencil.fit(field);
+        let [a, b, hxx, hxy, hyy] = stencil.fit(field);
         let r = (a * a + b * b).sqrt();
         // `spread / σ` is the size of the gradient the values could have at most.
         if !r.is_finite() || r <= VANISHING_GRADIENT * spread / stencil.scale {
@@ -319,9 +333,9 @@ impl LevelJet {
 }
 
 impl JetStencil<'_> {
-    /// The fit's coefficients `(c, a, b, A, B, C)` of `field`.
-    pub fn fit(&self, field: &[f64]) -> [f64; UNKNOWNS] {
-        let mut c = [0.0; UNKNOWNS];
+    /// The fit's coefficients `(a, b, A, B, C)` of `field`.
+    pub fn fit(&self, field: &[f64]) -> [f64; COEFFICIENTS] {
+        let mut c = [0.0; COEFFICIENTS];
         for (&u, w) in self.vertices.iter().zip(self.weights) {
             let f = field[u as usize];
             for (ci, wi) in c.iter_mut().zip(w) {
@@ -377,7 +391,7 @@ mod tests {
             })
             .collect();
         let c = stencils.get(v).fit(&field);
-        for (got, want) in c[1..].iter().zip([0.7, -0.2, 0.3, 0.1, -0.4]) {
+        for (got, want) in c.iter().zip([0.7, -0.2, 0.3, 0.1, -0.4]) {
             assert!((got - want).abs() < 1e-9, "{c:?}");
         }
     }
