@@ -5,7 +5,7 @@ use rayon::prelude::*;
 
 use super::evaluation::{squared_norm, sum_in_block_order, with_jacobian_scratch};
 use super::normal_pattern::{check_positions, NormalPattern};
-use super::packed_upper::add_outer_product;
+use super::packed_upper::gram_of_rows;
 use super::schur::GroupSystems;
 use super::structure::{triangle_len, BlockStructure, GroupStructure};
 use super::{LeastSquaresProblem, SolverError};
@@ -44,11 +44,8 @@ impl ConstantHessian {
                 jacobian.clear();
                 jacobian.resize(residuals.len() * n, 0.0);
                 problem.evaluate_block(b, x, residuals, Some(jacobian));
-                gram.clear();
                 gram.resize(triangle_len(n), 0.0);
-                for row in jacobian.chunks_exact(n) {
-                    add_outer_product(row, gram);
-                }
+                gram_of_rows(jacobian, gram, n);
             });
             add_gram(pattern, b, &self.gram, &mut self.values);
         }

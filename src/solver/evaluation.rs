@@ -6,7 +6,7 @@ use std::cell::Cell;
 
 use rayon::prelude::*;
 
-use super::packed_upper::add_outer_product;
+use super::packed_upper::gram_of_rows;
 use super::segments::try_for_each_segment;
 use super::structure::BlockStructure;
 use super::{LeastSquaresProblem, SolverError};
@@ -86,10 +86,7 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
             jacobian_transpose_times(jacobian, s.residuals, s.gradient);
             if !s.gram.is_empty() {
                 debug_assert!(structure.global_positions(b).iter().enumerate().all(|(i, &p)| p as usize == i));
-                s.gram.fill(0.0);
-                for row in jacobian.chunks_exact(n) {
-                    add_outer_product(row, s.gram);
-                }
+                gram_of_rows(jacobian, s.gram, n);
             }
             true
         })
