@@ -6,7 +6,7 @@ use std::cell::Cell;
 
 use rayon::prelude::*;
 
-use super::packed_upper::gram_of_rows;
+use super::packed_upper::add_outer_product;
 use super::segments::try_for_each_segment;
 use super::structure::BlockStructure;
 use super::{LeastSquaresProblem, SolverError};
@@ -36,17 +36,6 @@ pub(crate) fn with_jacobian_scratch<T>(f: impl FnOnce(&mut Vec<f64>) -> T) -> T 
     result
 }
 
-/// Jᵀr of a block into `gradient` (its length is the Jacobian's column count, > 0), summed row
-/// by row in order.
-pub(crate) fn jacobian_transpose_times(jacobian: &[f64], residuals: &[f64], gradient: &mut [f64]) {
-    gradient.fill(0.0);
-    for (row, &rv) in jacobian.chunks_exact(gradient.len()).zip(residuals) {
-        for (ga, &j) in gradient.iter_mut().zip(row) {
-            *ga += j * rv;
-        }
-    }
-}
-
 /// Evaluates every block without a local group at `x` into its slot: residuals, Jᵀr and the
 /// Gram products of its columns, from its Jacobian evaluated into a per-thread scratch. Blocks
 /// whose Jacobian is constant ([`LeastSquaresProblem::block_jacobian_is_constant`]) get no Gram
@@ -71,24 +60,35 @@ pub(crate) fn evaluate_slots<P: LeastSquaresProblem>(
             jacobian.clear();
             jacobian.resize(s.residuals.len() * n, 0.0);
             problem.evaluate_block(b, x, s.residuals, Some(jacobian));
-            // A constant Jacobian reused at its revision was checked when it was first evaluated.
-            let reused = reuse_constant && structure.constant_jacobian[b];
-            if !(s.residuals.iter().all(|v| v.is_finite()) && (reused || jacobian.iter().all(|v| v.is_finite()))) {
+            if !s.residuals.iter().all(|v| v.is_finite()) {
                 return false;
             }
             if n == 0 {
                 return true;
             }
-            // Jᵀr and the upper Gram of the global columns (in the order of the pattern's gram
-            // targets), accumulated row by row; structurally zero entries are skipped. Only
-            // blocks without a local group and with a varying Jacobian have a Gram part, and all
-            // their variables are global, so its columns are the row's own entries in order.
-            jacobian_transpose_times(jacobian, s.residuals, s.gradient);
-            if !s.gram.is_empty() {
-                debug_assert!(structure.global_positions(b).iter().enumerate().all(|(i, &p)| p as usize == i));
-                gram_of_rows(jacobian, s.gram, n);
+            // One pass over the Jacobian, row by row: Jᵀr (each entry summed over the rows in
+            // order), the upper Gram of the global columns (in the order of the pattern's gram
+            // targets; structurally zero entries are skipped) and the Jacobian's finiteness.
+            // Only blocks without a local group and with a varying Jacobian have a Gram part, and
+            // all their variables are global, so its columns are the row's own entries in order.
+            // A constant Jacobian reused at its revision was checked when it was first evaluated.
+            let check = !(reuse_constant && structure.constant_jacobian[b]);
+            debug_assert!(s.gram.is_empty() || structure.global_positions(b).iter().enumerate().all(|(i, &p)| p as usize == i));
+            s.gradient.fill(0.0);
+            s.gram.fill(0.0);
+            let mut finite = true;
+            for (row, &r) in jacobian.chunks_exact(n).zip(s.residuals.iter()) {
+                for (g, &j) in s.gradient.iter_mut().zip(row) {
+                    *g += j * r;
+                }
+                if check {
+                    finite &= row.iter().all(|v| v.is_finite());
+                }
+                if !s.gram.is_empty() {
+                    add_outer_product(row, s.gram);
+                }
             }
-            true
+            finite
         })
     });
     match failed {

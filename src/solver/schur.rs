@@ -26,7 +26,7 @@
 //! packed term W − G_L on its Schur targets, which cover every global pair of its blocks.
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use super::evaluation::{jacobian_transpose_times, with_jacobian_scratch};
+use super::evaluation::with_jacobian_scratch;
 use super::packed_upper::add_outer_product;
 use super::segments::try_for_each_segment;
 use super::structure::{triangle_len, BlockStructure, GroupStructure};
@@ -290,26 +290,32 @@ fn accumulate_kernel<P: LeastSquaresProblem>(
         if !residuals.iter().all(|v| v.is_finite()) {
             return Err(2 * b);
         }
-        if !jacobian.iter().all(|v| v.is_finite()) {
-            return Err(2 * b + 1);
-        }
-        jacobian_transpose_times(jacobian, residuals, gradient);
+        // One pass over the Jacobian, row by row: its finiteness, Jᵀr (each entry summed over the
+        // rows in order; zero entries add nothing) and the row's entries, scattered densely over
+        // the group's locals and globals, accumulated into D_L, C_L and G_L.
+        gradient.fill(0.0);
+        let mut finite = true;
         let (local_positions, local_offsets) = blocks.local_positions(b);
-        for (&p, &o) in local_positions.iter().zip(local_offsets) {
-            s.coupling[o as usize * w + q] += gradient[p as usize];
-        }
         let global_positions = blocks.global_positions(b);
         let coupling_index = blocks.coupling_index(b);
-        // Each row's entries, scattered densely over the group's locals and globals.
-        for row in jacobian.chunks_exact(n) {
+        for (row, &r) in jacobian.chunks_exact(n).zip(residuals.iter()) {
             for (&p, &o) in local_positions.iter().zip(local_offsets) {
-                row_locals[o as usize] = row[p as usize];
+                let value = row[p as usize];
+                row_locals[o as usize] = value;
+                if value != 0.0 {
+                    finite &= value.is_finite();
+                    gradient[p as usize] += value * r;
+                }
             }
             let mut any_global = false;
             for (&p, &i) in global_positions.iter().zip(coupling_index) {
                 let value = row[p as usize];
                 row_globals[i as usize] = value;
-                any_global |= value != 0.0;
+                if value != 0.0 {
+                    any_global = true;
+                    finite &= value.is_finite();
+                    gradient[p as usize] += value * r;
+                }
             }
             // Structural zeros (auxiliaries absent from a residual row, field values of uncrossed
             // edges) add nothing and are skipped row by row.
@@ -329,6 +335,12 @@ fn accumulate_kernel<P: LeastSquaresProblem>(
             if any_global {
                 add_outer_product(row_globals, s.gram);
             }
+        }
+        if !finite {
+            return Err(2 * b + 1);
+        }
+        for (&p, &o) in local_positions.iter().zip(local_offsets) {
+            s.coupling[o as usize * w + q] += gradient[p as usize];
         }
     }
     Ok(())
