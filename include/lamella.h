@@ -858,6 +858,25 @@ typedef struct LmlBaseMeshReport {
   double energy;
 } LmlBaseMeshReport;
 
+// The weights of a base-mesh optimisation's terms (paper Sec. 3.5; Table 3 gives them per
+// figure), on the net scaled to mean segment length 1 (written by the library or the caller; the
+// caller owns the struct). Each finite and ≥ 0; `curve` > 0, and `torsion` > 0 for a session
+// with torsion-free nodes.
+typedef struct LmlBaseMeshWeights {
+  // The curve conditions: vertex normals, binormals and each family's own rows. Default 1.
+  double curve;
+  // Fairness `‖v_back − 2v + v_front‖²` along each polyline. Default 1e-3.
+  double fair;
+  // Closeness: the distance to the reference along its normal (and, past its boundary, the
+  // tangential offset). Default 1.
+  double close;
+  // The pull `‖v − v_start‖²` to the start positions: what holds a net's extent (a net that
+  // cannot meet its families where it was extracted shrinks toward its centre). Default 1e-4.
+  double pull;
+  // The torsion-free node rows of Eq. 21 (torsion-free sessions only). Default 1.
+  double torsion;
+} LmlBaseMeshWeights;
+
 // One node of the optimised net (a vertex inside a row and a column): the angle between the
 // rulings of its row's and its column's strips there (Sec. 5.2.1), and the node axis.
 typedef struct LmlBaseMeshNode {
@@ -2690,6 +2709,23 @@ LmlStatus lml_base_mesh_load(const uint8_t *bytes, size_t length, struct LmlBase
 LmlStatus lml_base_mesh_step(struct LmlBaseMesh *base_mesh,
                              uint32_t max_iterations,
                              struct LmlBaseMeshReport *report);
+
+// Fills `*out` with the default weights (the sessions' own unless changed with
+// `lml_base_mesh_set_weights`). Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL
+// `out`).
+LmlStatus lml_base_mesh_weights_default(struct LmlBaseMeshWeights *out);
+
+// Writes the weights `base_mesh` optimises with to `*out`. Returns `LML_STATUS_OK` or
+// `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+LmlStatus lml_base_mesh_weights(const struct LmlBaseMesh *base_mesh,
+                                struct LmlBaseMeshWeights *out);
+
+// Replaces the weights of a session that has not stepped an iteration yet (the same as creating
+// it with them; `*weights` is copied). Returns `LML_STATUS_OK`, or `LML_STATUS_INVALID_ARGUMENT`
+// for a NULL argument, a weight out of range (named, e.g. `weights.pull`) or a session that has
+// already iterated (`weights`); the session is then unchanged.
+LmlStatus lml_base_mesh_set_weights(struct LmlBaseMesh *base_mesh,
+                                    const struct LmlBaseMeshWeights *weights);
 
 // Writes the state after the last step (or after creation) to `*report`.
 // Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL argument).

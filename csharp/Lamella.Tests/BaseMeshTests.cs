@@ -316,5 +316,55 @@ namespace Lamella.Tests
                 }
             }
         }
+
+        /// <summary>The largest distance between the points of two arrays of x, y, z per vertex.</summary>
+        private static double LargestMove(double[] a, double[] b)
+        {
+            double largest = 0;
+            for (int v = 0; v < a.Length / 3; v++)
+            {
+                largest = Math.Max(largest, Vec.Norm(new[] { a[3 * v] - b[3 * v], a[3 * v + 1] - b[3 * v + 1], a[3 * v + 2] - b[3 * v + 2] }));
+            }
+            return largest;
+        }
+
+        [Test]
+        public void WeightsSetBeforeTheFirstStepSteerTheOptimisation()
+        {
+            var cylinder = new Cylinder(72, 40, 7);
+            var net = new HelixNet(0.02);
+            BaseMeshWeights defaults = BaseMeshWeights.Default();
+            Assert.AreEqual(1.0, defaults.Curve);
+            Assert.AreEqual(1e-3, defaults.Fair);
+            Assert.AreEqual(1.0, defaults.Close);
+            Assert.AreEqual(1e-4, defaults.Pull);
+            Assert.AreEqual(1.0, defaults.Torsion);
+            using (var reference = LamellaMesh.FromArrays(cylinder.Xyz, cylinder.Triangles))
+            using (var held = new BaseMeshSolver(reference, net.Points, net.Rows, net.Columns, 90.0, 90.0, false))
+            using (var free = new BaseMeshSolver(reference, net.Points, net.Rows, net.Columns, 90.0, 90.0, false))
+            {
+                Assert.AreEqual(defaults, held.Weights);
+                BaseMeshWeights bad = defaults;
+                bad.Pull = -1;
+                var error = Assert.Throws<LamellaException>(() => held.SetWeights(bad));
+                Assert.AreEqual(Status.InvalidArgument, error.Status);
+                StringAssert.Contains("weights.pull", error.NativeMessage);
+                Assert.AreEqual(defaults, held.Weights, "a refused weight leaves the session as it was");
+
+                // A pull a million times the default holds every vertex where the net was given; the defaults move them
+                // to restore the geodesics.
+                BaseMeshWeights strong = defaults;
+                strong.Pull = 100;
+                held.SetWeights(strong);
+                Assert.AreEqual(100.0, held.Weights.Pull);
+                held.Step(10);
+                free.Step(10);
+                double heldMove = LargestMove(held.Positions(), net.Points), freeMove = LargestMove(free.Positions(), net.Points);
+                Assert.Less(heldMove, 0.1 * freeMove, "moved by up to " + heldMove + " held, " + freeMove + " with the defaults");
+
+                error = Assert.Throws<LamellaException>(() => held.SetWeights(defaults));
+                StringAssert.Contains("first iteration", error.NativeMessage);
+            }
+        }
     }
 }

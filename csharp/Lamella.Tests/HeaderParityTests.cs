@@ -46,6 +46,7 @@ namespace Lamella.Tests
             { "LmlBaseMeshReport", typeof(BaseMeshReportRecord) },
             { "LmlBaseMeshNode", typeof(BaseMeshNodeRecord) },
             { "LmlBaseMeshFamilyReport", typeof(BaseMeshFamilyReportRecord) },
+            { "LmlBaseMeshWeights", typeof(BaseMeshWeights) },
             { "LmlNode", typeof(NodeRecord) },
             { "LmlWebReport", typeof(WebReportRecord) },
             { "LmlWebNode", typeof(WebNodeRecord) },

@@ -345,6 +345,33 @@ namespace Lamella
             }
         }
 
+        /// <summary>The weights the session optimises with (<c>lml_base_mesh_weights</c>).</summary>
+        public BaseMeshWeights Weights
+        {
+            get
+            {
+                lock (gate)
+                {
+                    BaseMeshWeights weights;
+                    Native.Check(NativeMethods.lml_base_mesh_weights(handle, out weights));
+                    return weights;
+                }
+            }
+        }
+
+        /// <summary>
+        /// Replaces the weights before the first iteration (<c>lml_base_mesh_set_weights</c>): the same as a session started
+        /// with them.
+        /// </summary>
+        /// <exception cref="LamellaException"><see cref="Status.InvalidArgument"/> for a weight out of range (named, e.g. <c>weights.pull</c>) or a session that has already iterated (<c>weights</c>); the session is then unchanged.</exception>
+        public void SetWeights(BaseMeshWeights weights)
+        {
+            lock (gate)
+            {
+                Native.Check(NativeMethods.lml_base_mesh_set_weights(handle, ref weights));
+            }
+        }
+
         /// <summary>Runs at most <paramref name="maxIterations"/> iterations; returns the state (converged or not).</summary>
         public BaseMeshReport Step(int maxIterations)
         {

@@ -4,7 +4,7 @@
 use super::error::BaseMeshError;
 use super::net_mesh::NetMesh;
 use super::node_torsion::NodeRuling;
-use super::params::BaseMeshParams;
+use super::params::{BaseMeshParams, BaseMeshWeights};
 use super::problem::{vec3, Anchor, BaseMeshProblem, CurveRows};
 use super::report::{target_family, BaseMeshReport, Measures, Reference};
 use super::start::{initialise_auxiliaries, mirror_degrees, oriented_target};
@@ -68,13 +68,10 @@ impl BaseMeshSolver {
         let as_given = reference.family_angles(net, &params.families, &given);
         let mirrored = reference.family_angles(net, &params.families, &params.families.iter().copied().map(mirror_degrees).collect::<Vec<_>>());
         let targets_degrees: Vec<f64> = (0..params.families.len()).map(|k| oriented_target(params.families[k], &as_given[k], &mirrored[k])).collect();
-        let scaled = net.with_positions(net.positions().iter().map(|p| p * scale).collect());
         let measures = reference.measure(net, &params.families, &targets_degrees);
-        let mut held = vec![false; net.vertex_count()];
-        let torsion_free = params.torsion_free && !params.families_first;
-        let (problem, lm, x) = stage(&reference, scaled, scale, &params, &targets_degrees, torsion_free, &measures, &mut held)?;
+        let Start { problem, lm, x, held, energy } = Start::new(&reference, net, scale, &params, &targets_degrees, &measures)?;
         let mut report = BaseMeshReport::new(&measures, &targets_degrees, params.tolerance_degrees);
-        report.energy = energy(&problem, &x);
+        report.energy = energy;
         Ok(BaseMeshSolver {
             given: net.clone(),
             reference,
@@ -91,6 +88,24 @@ impl BaseMeshSolver {
             measures,
             held,
         })
+    }
+
+    /// Replaces the weights of a session that has not iterated yet: the same as creating it with
+    /// them in [`BaseMeshParams::weights`] (the paper's Table 3 varies them from figure to figure).
+    /// Errors: `InvalidParameter` naming the weight out of range (as [`BaseMeshParams::validate`]),
+    /// or `weights` once an iteration has run (the net has moved under the old ones).
+    pub fn set_weights(&mut self, weights: BaseMeshWeights) -> Result<(), BaseMeshError> {
+        if self.iterations > 0 {
+            let message = format!("are set before the first iteration; this session has run {}", self.iterations);
+            return Err(BaseMeshError::InvalidParameter { name: "weights", message });
+        }
+        let params = BaseMeshParams { weights, ..self.params.clone() };
+        params.validate()?;
+        let start = Start::new(&self.reference, &self.given, self.scale, &params, &self.targets_degrees, &self.measures)?;
+        (self.problem, self.lm, self.x, self.held, self.params) = (start.problem, start.lm, start.x, start.held, params);
+        self.initial.energy = start.energy;
+        self.last_report.energy = start.energy;
+        Ok(())
     }
 
     /// Runs at most `max_iterations` Levenberg–Marquardt iterations (the reference's closest
@@ -246,6 +261,28 @@ pub(super) fn unit_scale(net: &NetMesh) -> f64 {
         1.0 / mean
     } else {
         1.0
+    }
+}
+
+/// The first stage of a session: its problem on the net scaled to mean segment 1, the solver, the
+/// start of the variables, the vertices held past the reference's boundary and the energy there.
+struct Start {
+    problem: BaseMeshProblem,
+    lm: LevenbergMarquardt,
+    x: Vec<f64>,
+    held: Vec<bool>,
+    energy: f64,
+}
+
+impl Start {
+    /// The first stage on `net` (the caller's units, scaled by `scale`) as measured in `measures`.
+    fn new(reference: &Reference, net: &NetMesh, scale: f64, params: &BaseMeshParams, targets_degrees: &[f64], measures: &Measures) -> Result<Start, BaseMeshError> {
+        let scaled = net.with_positions(net.positions().iter().map(|p| p * scale).collect());
+        let mut held = vec![false; net.vertex_count()];
+        let torsion_free = params.torsion_free && !params.families_first;
+        let (problem, lm, x) = stage(reference, scaled, scale, params, targets_degrees, torsion_free, measures, &mut held)?;
+        let energy = energy(&problem, &x);
+        Ok(Start { problem, lm, x, held, energy })
     }
 }
 

@@ -16,7 +16,7 @@ use super::status::LmlStatus;
 use super::strip_net::LmlStripNet;
 use super::strip_web::LmlStripWeb;
 use super::strips::LmlStrips;
-use crate::base_mesh::{BaseMeshError, BaseMeshParams, BaseMeshReport, BaseMeshSolver, NetMesh, NodeRuling};
+use crate::base_mesh::{BaseMeshError, BaseMeshParams, BaseMeshReport, BaseMeshSolver, BaseMeshWeights, NetMesh, NodeRuling};
 use crate::field::{Family, FieldError};
 use crate::mesh::{TriMesh, Vec3};
 
@@ -528,6 +528,78 @@ pub unsafe extern "C" fn lml_base_mesh_step(base_mesh: *mut LmlBaseMesh, max_ite
             report.set(LmlBaseMeshReport::from(&step));
         }
         Ok(if step.converged { LmlStatus::Converged } else { LmlStatus::More })
+    })
+}
+
+/// The weights of a base-mesh optimisation's terms (paper Sec. 3.5; Table 3 gives them per
+/// figure), on the net scaled to mean segment length 1 (written by the library or the caller; the
+/// caller owns the struct). Each finite and ≥ 0; `curve` > 0, and `torsion` > 0 for a session
+/// with torsion-free nodes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LmlBaseMeshWeights {
+    /// The curve conditions: vertex normals, binormals and each family's own rows. Default 1.
+    pub curve: f64,
+    /// Fairness `‖v_back − 2v + v_front‖²` along each polyline. Default 1e-3.
+    pub fair: f64,
+    /// Closeness: the distance to the reference along its normal (and, past its boundary, the
+    /// tangential offset). Default 1.
+    pub close: f64,
+    /// The pull `‖v − v_start‖²` to the start positions: what holds a net's extent (a net that
+    /// cannot meet its families where it was extracted shrinks toward its centre). Default 1e-4.
+    pub pull: f64,
+    /// The torsion-free node rows of Eq. 21 (torsion-free sessions only). Default 1.
+    pub torsion: f64,
+}
+
+impl From<BaseMeshWeights> for LmlBaseMeshWeights {
+    fn from(w: BaseMeshWeights) -> Self {
+        LmlBaseMeshWeights { curve: w.curve, fair: w.fair, close: w.close, pull: w.pull, torsion: w.torsion }
+    }
+}
+
+impl From<LmlBaseMeshWeights> for BaseMeshWeights {
+    fn from(w: LmlBaseMeshWeights) -> Self {
+        BaseMeshWeights { curve: w.curve, fair: w.fair, close: w.close, pull: w.pull, torsion: w.torsion }
+    }
+}
+
+/// Fills `*out` with the default weights (the sessions' own unless changed with
+/// `lml_base_mesh_set_weights`). Returns `LML_STATUS_OK` or `LML_STATUS_INVALID_ARGUMENT` (NULL
+/// `out`).
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_weights_default(out: *mut LmlBaseMeshWeights) -> LmlStatus {
+    guarded(|| {
+        // SAFETY: writable `out`.
+        unsafe { Out::new(out, "out") }?.set(BaseMeshWeights::default().into());
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// Writes the weights `base_mesh` optimises with to `*out`. Returns `LML_STATUS_OK` or
+/// `LML_STATUS_INVALID_ARGUMENT` (NULL argument).
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_weights(base_mesh: *const LmlBaseMesh, out: *mut LmlBaseMeshWeights) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle; writable `out`.
+        let base_mesh = unsafe { handle(base_mesh, "base_mesh") }?;
+        unsafe { Out::new(out, "out") }?.set(base_mesh.solver.params().weights.into());
+        Ok(LmlStatus::Ok)
+    })
+}
+
+/// Replaces the weights of a session that has not stepped an iteration yet (the same as creating
+/// it with them; `*weights` is copied). Returns `LML_STATUS_OK`, or `LML_STATUS_INVALID_ARGUMENT`
+/// for a NULL argument, a weight out of range (named, e.g. `weights.pull`) or a session that has
+/// already iterated (`weights`); the session is then unchanged.
+#[no_mangle]
+pub unsafe extern "C" fn lml_base_mesh_set_weights(base_mesh: *mut LmlBaseMesh, weights: *const LmlBaseMeshWeights) -> LmlStatus {
+    guarded(|| {
+        // SAFETY (both blocks): live handle used by this thread only; readable `weights`.
+        let base_mesh = unsafe { handle_mut(base_mesh, "base_mesh") }?;
+        let weights = unsafe { input(weights, 1, "weights") }?[0];
+        base_mesh.solver.set_weights(weights.into())?;
+        Ok(LmlStatus::Ok)
     })
 }
 

@@ -316,6 +316,89 @@ static double norm(const double *a)
 
 /* |det(b - a, c - a, d - a)| over the lengths of the three edges: 0 for a planar quad a b c d,
  * the sine of the angle of d - a out of the plane of the other two for a square. */
+/* The largest distance of a vertex of `session` from where the net started (`net->xyz`); -1 when
+ * the positions cannot be read. */
+static double largest_move(const LmlBaseMesh *session, const HelixNet *net)
+{
+    size_t v, needed = 0;
+    double largest = -1.0, *xyz = malloc(3 * net->n * sizeof(double));
+    if (xyz != NULL && lml_base_mesh_positions(session, xyz, 3 * net->n, &needed) == LML_STATUS_OK) {
+        for (v = 0; v < net->n; v++) {
+            double d[3];
+            difference(xyz + 3 * v, net->xyz + 3 * v, d);
+            largest = fmax(largest, norm(d));
+        }
+    }
+    free(xyz);
+    return largest;
+}
+
+/* The weights (paper Table 3 gives them per figure): the defaults, read back from a session, set
+ * before its first iteration (a pull a million times the default holds every vertex where the net
+ * was given, where the default weights move them to restore the geodesics), and refused by name
+ * once it has iterated or out of range. */
+static void weights(const HelixNet *net, const LmlMesh *mesh)
+{
+    LmlBaseMesh *held = NULL, *free_net = NULL;
+    LmlBaseMeshWeights defaults, got, strong;
+    LmlStatus status;
+    double held_move, free_move;
+    CHECK_STATUS(lml_base_mesh_weights_default(NULL), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_STATUS(lml_base_mesh_weights_default(&defaults), LML_STATUS_OK);
+    CHECK(defaults.curve == 1.0 && defaults.fair == 1e-3 && defaults.close == 1.0 && defaults.pull == 1e-4 && defaults.torsion == 1.0);
+    CHECK_STATUS(lml_base_mesh_new(mesh, net->xyz, net->n, net->polylines, net->polyline_vertex_count, net->lengths, net->count[0],
+                                   net->count[1], 90.0, 90.0, 0, &held),
+                 LML_STATUS_OK);
+    CHECK_STATUS(lml_base_mesh_new(mesh, net->xyz, net->n, net->polylines, net->polyline_vertex_count, net->lengths, net->count[0],
+                                   net->count[1], 90.0, 90.0, 0, &free_net),
+                 LML_STATUS_OK);
+    if (held == NULL || free_net == NULL) {
+        lml_base_mesh_free(held);
+        lml_base_mesh_free(free_net);
+        return;
+    }
+    CHECK_STATUS(lml_base_mesh_weights(NULL, &got), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("base_mesh");
+    CHECK_STATUS(lml_base_mesh_weights(held, NULL), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_STATUS(lml_base_mesh_weights(held, &got), LML_STATUS_OK);
+    CHECK(memcmp(&got, &defaults, sizeof got) == 0);
+
+    strong = defaults;
+    strong.pull = -1.0;
+    CHECK_STATUS(lml_base_mesh_set_weights(held, &strong), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("weights.pull");
+    strong.pull = 1e-4;
+    strong.curve = 0.0;
+    CHECK_STATUS(lml_base_mesh_set_weights(held, &strong), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("weights.curve");
+    CHECK_STATUS(lml_base_mesh_set_weights(held, NULL), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("weights");
+    CHECK_STATUS(lml_base_mesh_set_weights(NULL, &defaults), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("base_mesh");
+    CHECK_STATUS(lml_base_mesh_weights(held, &got), LML_STATUS_OK);
+    CHECK(memcmp(&got, &defaults, sizeof got) == 0);
+
+    strong = defaults;
+    strong.pull = 100.0;
+    CHECK_STATUS(lml_base_mesh_set_weights(held, &strong), LML_STATUS_OK);
+    CHECK_STATUS(lml_base_mesh_weights(held, &got), LML_STATUS_OK);
+    CHECK(got.pull == 100.0 && got.fair == defaults.fair);
+    /* Held where it was given, the net settles at once. */
+    status = lml_base_mesh_step(held, 10, NULL);
+    CHECK(status == LML_STATUS_MORE || status == LML_STATUS_CONVERGED);
+    CHECK_STATUS(lml_base_mesh_step(free_net, 10, NULL), LML_STATUS_MORE);
+    held_move = largest_move(held, net);
+    free_move = largest_move(free_net, net);
+    CHECK(held_move >= 0.0 && free_move > 0.0 && held_move < 0.1 * free_move);
+    printf("  base mesh weights: after 10 iterations the vertices moved by up to %.5f with the pull at 100, %.5f with the defaults\n",
+           held_move, free_move);
+    CHECK_STATUS(lml_base_mesh_set_weights(held, &defaults), LML_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("weights");
+    CHECK_MESSAGE("first iteration");
+    lml_base_mesh_free(held);
+    lml_base_mesh_free(free_net);
+}
+
 static double non_planarity(const double *xyz, const uint32_t *q)
 {
     double u[3], v[3], w[3];
@@ -516,6 +599,7 @@ void test_base_mesh(void)
     helix_net(net);
     CHECK_STATUS(lml_mesh_new(reference.xyz, reference.vertex_count, reference.triangles, reference.triangle_count, &mesh), LML_STATUS_OK);
     invalid_inputs(net, mesh);
+    weights(net, mesh);
     slope_net(net, &reference);
 
     CHECK_STATUS(lml_base_mesh_new(mesh, net->xyz, net->n, net->polylines, net->polyline_vertex_count, net->lengths, net->count[0],

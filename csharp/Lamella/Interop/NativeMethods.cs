@@ -197,6 +197,9 @@ namespace Lamella.Interop
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_base_mesh_from_strip_web(StripWebHandle web, MeshHandle reference, double[] thetas, out BaseMeshHandle baseMesh);
         [DllImport(Library, CallingConvention = Cdecl)] public static extern void lml_base_mesh_free(IntPtr baseMesh);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_base_mesh_weights_default(out BaseMeshWeights weights);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_base_mesh_weights(BaseMeshHandle baseMesh, out BaseMeshWeights weights);
+        [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_base_mesh_set_weights(BaseMeshHandle baseMesh, ref BaseMeshWeights weights);
         [DllImport(Library, CallingConvention = Cdecl)]
         public static extern Status lml_base_mesh_step(BaseMeshHandle baseMesh, uint maxIterations, out BaseMeshReportRecord report);
         [DllImport(Library, CallingConvention = Cdecl)] public static extern Status lml_base_mesh_report(BaseMeshHandle baseMesh, out BaseMeshReportRecord report);
