@@ -59,15 +59,31 @@ namespace Lamella.Grasshopper
         }
 
         /// <summary>
-        /// Registers Run, the last input (so that documents saved before it existed keep their wires); <paramref name="shows"/>
-        /// names the outputs shown while it steps.
+        /// Registers Run and then the optional weights (after it, so that documents saved before either existed keep their
+        /// wires); <paramref name="shows"/> names the outputs shown while it steps.
         /// </summary>
         protected static void RegisterRunInput(GH_InputParamManager pManager, string design, string shows)
         {
             pManager.AddBooleanParameter("Run", "Run", RunDescription("the " + design,
                 "; meanwhile " + shows + " show the current iterate, and the strips are built once it converges or stops (at Max Iterations, on Escape, or when Run is switched off)"),
                 GH_ParamAccess.item, false);
+            foreach (var weight in Weights)
+            {
+                int index = pManager.AddNumberParameter(weight.Name, weight.Nickname, "Optional weight (paper Table 3 gives them per figure), finite and ≥ 0, on the " + design +
+                    " scaled to mean segment length 1: " + weight.Description + " Changing it starts over.", GH_ParamAccess.item);
+                pManager[index].Optional = true;
+            }
         }
+
+        /// <summary>The optional weight inputs after Run, in order: name, nickname, what it weighs (with its default).</summary>
+        private static readonly (string Name, string Nickname, string Description)[] Weights =
+        {
+            ("Curve Weight", "WC", "the families' rows (normals, binormals, each family's angle). Default 1, > 0."),
+            ("Fairness Weight", "WF", "fairness along every polyline. Default 0.001."),
+            ("Closeness Weight", "WS", "the distance to the reference along its normal. Default 1."),
+            ("Pull Weight", "WP", "the pull toward the positions as given: raise it (to 0.01, say) to keep the extent of a net that shrinks toward its centre where it cannot meet its families as placed. Default 0.0001."),
+            ("Torsion Weight", "WT", "the torsion-free node rows (Eq. 21), with torsion-free nodes only. Default 1, > 0."),
+        };
 
         /// <summary>The inputs every base-mesh component has: the reference (input 0), those of <see cref="RegisterSolveInputs"/> and Run.</summary>
         protected sealed class BaseMeshInputs
@@ -79,12 +95,14 @@ namespace Lamella.Grasshopper
             public bool WidthGiven;
             /// <summary>Solve (one-shot) and Run (live).</summary>
             public bool SolveNow, Run;
+            /// <summary>The weights: the library's defaults, replaced by those given after Run.</summary>
+            public BaseMeshWeights Weights = BaseMeshWeights.Default();
         }
 
         /// <summary>
-        /// Reads the reference (input 0), Max Iterations, Width and Solve (from input <paramref name="maxIterations"/> on)
-        /// and Run (input <paramref name="run"/>). Null when there is no reference, or with an error when Max Iterations is
-        /// below 1.
+        /// Reads the reference (input 0), Max Iterations, Width and Solve (from input <paramref name="maxIterations"/> on),
+        /// Run (input <paramref name="run"/>) and the weights after it. Null when there is no reference, or with an error
+        /// when Max Iterations is below 1.
         /// </summary>
         protected BaseMeshInputs ReadInputs(IGH_DataAccess DA, int maxIterations, int run)
         {
@@ -94,6 +112,9 @@ namespace Lamella.Grasshopper
             inputs.WidthGiven = DA.GetData(maxIterations + 1, ref inputs.Width);
             DA.GetData(maxIterations + 2, ref inputs.SolveNow);
             DA.GetData(run, ref inputs.Run);
+            double[] weights = { inputs.Weights.Curve, inputs.Weights.Fair, inputs.Weights.Close, inputs.Weights.Pull, inputs.Weights.Torsion };
+            for (int w = 0; w < weights.Length; w++) DA.GetData(run + 1 + w, ref weights[w]);
+            inputs.Weights = new BaseMeshWeights { Curve = weights[0], Fair = weights[1], Close = weights[2], Pull = weights[3], Torsion = weights[4] };
             if (inputs.MaxIterations < 1)
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Error, "Max Iterations must be at least 1");
@@ -104,16 +125,18 @@ namespace Lamella.Grasshopper
 
         /// <summary>
         /// The base-mesh session of this iteration (see <see cref="LiveComponent.LiveSession{T}"/>): kept while the cleaned
-        /// reference, the vertices <paramref name="xyz"/>, the <paramref name="polylines"/> of each family and
-        /// <paramref name="parameters"/> (the targets and switches) stay, else started by <paramref name="start"/> on the
-        /// reference, with the nodes of the net as given when <paramref name="keepInitialNodes"/>. Null (with a remark)
+        /// reference, the vertices <paramref name="xyz"/>, the <paramref name="polylines"/> of each family,
+        /// <paramref name="parameters"/> (the targets and switches) and the weights stay, else started by
+        /// <paramref name="start"/> on the reference with the weights, with the nodes of the net as given when
+        /// <paramref name="keepInitialNodes"/>. Null (with a remark)
         /// when neither Run nor Solve is on and these inputs have no session yet. <paramref name="design"/>: "net", "web".
         /// </summary>
         protected SolverSession<BaseMeshRun, BaseMeshReport> BaseMeshSession(IGH_DataAccess DA, BaseMeshInputs inputs, double[] xyz, int[][][] polylines,
             double[] parameters, string design, bool keepInitialNodes, Func<LamellaMesh, BaseMeshSolver> start)
         {
             CleanMesh clean = CleanMeshInput(inputs.Reference);
-            var fingerprint = new List<double>(parameters) { xyz.Length };
+            BaseMeshWeights weights = inputs.Weights;
+            var fingerprint = new List<double>(parameters) { weights.Curve, weights.Fair, weights.Close, weights.Pull, weights.Torsion, xyz.Length };
             fingerprint.AddRange(xyz);
             foreach (int[][] family in polylines)
             {
@@ -130,7 +153,17 @@ namespace Lamella.Grasshopper
             {
                 using (LamellaMesh reference = LamellaMesh.FromArrays(clean.Xyz, clean.Triangles))
                 {
-                    return SolverSession.Of(new BaseMeshRun(start(reference), keepInitialNodes), signature);
+                    BaseMeshSolver solver = start(reference);
+                    try
+                    {
+                        solver.SetWeights(weights);
+                    }
+                    catch
+                    {
+                        solver.Dispose();
+                        throw;
+                    }
+                    return SolverSession.Of(new BaseMeshRun(solver, keepInitialNodes), signature);
                 }
             });
         }

@@ -114,6 +114,34 @@ fn optimise_refuses_bad_input_by_name() {
 }
 
 #[test]
+fn optimise_takes_weights_by_name_and_a_strong_pull_holds_the_net_where_it_was_given() {
+    let dir = Scratch::new("optimise_weights");
+    helix_files(&dir);
+    let run = |out: &str, extra: &[&str]| {
+        let args = [&["optimise", "--net", "net.obj", "--types", "G,G", "--reference", "cyl.obj", "--max-iterations", "10", "--quiet", "--out", out][..], extra].concat();
+        let output = lamella(&dir.0, &args);
+        assert!(matches!(output.status.code(), Some(0 | 3)), "{}", stderr(&output));
+        read_net(&dir.path(&format!("{out}/net.obj")))
+    };
+    let held = run("held", &["--weights", "pull=100, fair=1e-4"]);
+    let free = run("free", &[]);
+    let weights = &read_json(&dir.path("held/report.json"))["weights"];
+    assert_eq!((weights["pull"].as_f64(), weights["fair"].as_f64(), weights["curve"].as_f64(), weights["close"].as_f64()), (Some(100.0), Some(1e-4), Some(1.0), Some(1.0)));
+    assert_eq!(read_json(&dir.path("free/report.json"))["weights"]["pull"].as_f64(), Some(1e-4));
+    // Against the net as given: a pull a million times the default holds it, the defaults move it to geodesics.
+    let (given, _) = helix_net(0.02);
+    let largest_move = |net: &NetMesh| net.positions().iter().zip(given.positions()).map(|(a, b)| (a - b).norm()).fold(0.0, f64::max);
+    let (held_move, free_move) = (largest_move(&held), largest_move(&free));
+    assert!(held_move < 0.1 * free_move, "moved by up to {held_move} held, {free_move} with the defaults");
+    let bad = ["optimise", "--net", "net.obj", "--types", "G,G", "--reference", "cyl.obj", "--weights"];
+    assert_bad_input(&dir.0, &[&bad[..], &["pull=-1"]].concat(), &["weights.pull"]);
+    assert_bad_input(&dir.0, &[&bad[..], &["bend=1"]].concat(), &["--weights", "unknown weight `bend`"]);
+    assert_bad_input(&dir.0, &[&bad[..], &["pull"]].concat(), &["--weights", "not name=value"]);
+    assert_bad_input(&dir.0, &[&bad[..], &["pull=x"]].concat(), &["--weights", "pull", "not a number"]);
+    assert_bad_input(&dir.0, &[&bad[..], &["pull=1,pull=2"]].concat(), &["--weights", "pull is given twice"]);
+}
+
+#[test]
 fn a_resumed_optimisation_ends_where_an_uninterrupted_one_does() {
     let dir = Scratch::new("optimise_resume");
     helix_files(&dir);

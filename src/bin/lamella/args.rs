@@ -468,7 +468,7 @@ pub struct OptimiseArgs {
     /// Continue a base-mesh optimisation saved by an earlier `optimise` (its optimise.bin: net,
     /// reference, families, torsion-free nodes, tolerance and the optimised net), bit for bit as
     /// if it had not stopped; --max-iterations includes the iterations it ran before.
-    #[arg(long, value_name = "optimise.bin", conflicts_with_all = ["net", "types", "axis", "reference", "torsion_free", "tolerance"])]
+    #[arg(long, value_name = "optimise.bin", conflicts_with_all = ["net", "types", "axis", "reference", "torsion_free", "tolerance", "weights"])]
     pub resume: Option<PathBuf>,
     /// Also make every node torsion-free: one ruling shared by both strips there (Eq. 21).
     #[arg(long)]
@@ -483,6 +483,14 @@ pub struct OptimiseArgs {
     /// Strip width in metres [default: half the mean segment length of the net as given].
     #[arg(long, value_name = "M")]
     pub width: Option<f64>,
+    /// The weights of the terms, comma-separated `name=value` on the net scaled to mean segment 1
+    /// (the paper's Table 3 gives them per figure): curve (the family rows, default 1), fair
+    /// (fairness along the polylines, 1e-3), close (distance to the reference along its normal,
+    /// 1), pull (toward the start positions, 1e-4: raise it to keep a net's extent, which shrinks
+    /// where the families cannot be met as placed), torsion (Eq. 21's rows, 1); unnamed ones keep
+    /// their default, e.g. `pull=1e-2,fair=1e-4`.
+    #[arg(long, value_name = "NAME=W,...")]
+    pub weights: Option<String>,
     /// Largest angle error (degrees) of a family at a vertex, measured against the reference's
     /// normal; above it the command exits 3 (with --resume, the session's).
     #[arg(long, value_name = "DEGREES", default_value_t = 1.0)]

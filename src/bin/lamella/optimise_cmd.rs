@@ -14,7 +14,7 @@ use crate::net_obj::{net_obj, read_net_obj};
 use crate::output_dir::OutputDir;
 use crate::progress::{note, summary, Verbosity};
 use crate::strip_obj::strips_obj;
-use lamella::base_mesh::{BaseMeshParams, BaseMeshReport, BaseMeshSolver, NetMesh, NodeRuling, TORSION_FREE_DEGREES};
+use lamella::base_mesh::{BaseMeshParams, BaseMeshReport, BaseMeshSolver, BaseMeshWeights, NetMesh, NodeRuling, TORSION_FREE_DEGREES};
 use lamella::field::Family;
 use lamella::mesh::Vec3;
 use lamella::strips::{StripPattern, VertexDiagnostics};
@@ -46,8 +46,37 @@ fn start(args: &OptimiseArgs) -> CliResult<(BaseMeshSolver, String, String)> {
     };
     params.torsion_free = args.torsion_free;
     params.tolerance_degrees = args.tolerance;
+    if let Some(weights) = &args.weights {
+        params.weights = parse_weights(weights)?;
+    }
     let solver = BaseMeshSolver::new(&net, &reference, params).map_err(|e| CliError::bad_input(format!("optimise: {e}")))?;
     Ok((solver, path.display().to_string(), mesh_name(args.reference.as_deref())))
+}
+
+/// The weights of `--weights`: `name=value` pairs over the defaults, each name once.
+fn parse_weights(text: &str) -> CliResult<BaseMeshWeights> {
+    let mut weights = BaseMeshWeights::default();
+    let mut seen = Vec::new();
+    for pair in text.split(',') {
+        let bad = |message: String| CliError::bad_input(format!("--weights: {message}"));
+        let (name, value) = pair.split_once('=').ok_or_else(|| bad(format!("`{pair}` is not name=value")))?;
+        let name = name.trim();
+        let value: f64 = value.trim().parse().map_err(|_| bad(format!("{name}: `{}` is not a number", value.trim())))?;
+        let slot = match name {
+            "curve" => &mut weights.curve,
+            "fair" => &mut weights.fair,
+            "close" => &mut weights.close,
+            "pull" => &mut weights.pull,
+            "torsion" => &mut weights.torsion,
+            other => return Err(bad(format!("unknown weight `{other}` (curve, fair, close, pull, torsion)"))),
+        };
+        if seen.contains(&name) {
+            return Err(bad(format!("{name} is given twice")));
+        }
+        seen.push(name);
+        *slot = value;
+    }
+    Ok(weights)
 }
 
 pub fn run(args: &OptimiseArgs) -> CliResult<()> {
@@ -97,6 +126,7 @@ pub fn run(args: &OptimiseArgs) -> CliResult<()> {
         "families": labels,
         "torsion_free_asked": torsion_free,
         "tolerance_degrees": tolerance,
+        "weights": params.weights,
         "width": width,
         "initial": solver.initial_report(),
         "final": &report,
