@@ -1,5 +1,6 @@
 //! The benchmark problem: a θ = 60° field on the hall roof, started from the coordinate along
-//! the hall (the command-line demo's job), at the benchmark sizes.
+//! the hall (the command-line demo's job), at the benchmark sizes; and one default design as
+//! `lamella design` runs it ([`default_design`]).
 #![allow(dead_code)]
 
 use lamella::curves::{extract_level_curves, uniform_levels, LevelCurve};
