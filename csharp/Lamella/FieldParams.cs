@@ -58,7 +58,11 @@ namespace Lamella
         public Weights Weights;
         /// <summary>Target gradient norm (strip spacing ≈ 1 / target); 0 keeps the initial field's mean.</summary>
         public double GradientTarget;
-        /// <summary>Convergence: 3 iterations in a row each lower the energy by less than this fraction.</summary>
+        /// <summary>
+        /// Convergence: 3 iterations in a row each lower the energy by less than this fraction; the solve also ends when
+        /// the curve terms fall to 1e-7, or (meshes of 1,000 vertices and more) when the level curves, measured from
+        /// outside every 5 iterations once E_angle ≤ 1e-5, have not improved by 2 % in the last two measures.
+        /// </summary>
         public double RelativeTolerance;
         /// <summary>The axis d of the constant-slope families: 3 doubles, finite, not zero (default 0, 0, 1).</summary>
         [MarshalAs(UnmanagedType.ByValArray, SizeConst = 3)]

@@ -6,9 +6,10 @@ use super::darboux::LevelFrame;
 use super::error::FieldError;
 use super::failure_site::largest_residual_vertices;
 use super::gradient_norm::mean_gradient_norm;
-use super::params::{Family, FieldParams, Weights, FAMILY_MET_CURVE_ENERGY, SETTLED_CURVE_ENERGY, SETTLING_ITERATIONS};
+use super::params::{Family, FieldParams, Weights, FAMILY_MET_CURVE_ENERGY, PAPER_ANGLE_ENERGY, SETTLED_CURVE_ENERGY, SETTLING_ITERATIONS};
+use super::plateau::Plateau;
 use super::problem::FieldProblem;
-use super::report::{curve_energy, problem_frames, Evaluated, StepReport};
+use super::report::{angle_energy, curve_energy, problem_frames, Evaluated, StepReport};
 use crate::mesh::{TriMesh, Vec3};
 use crate::solver::{LeastSquaresProblem, LevenbergMarquardt, LmOptions, SolverError};
 
@@ -42,6 +43,10 @@ pub struct FieldSolver {
     pub(super) stage_iterations: usize,
     /// Consecutive iterations of the current stage that lowered `E_pg` by less than the relative tolerance.
     pub(super) slow_iterations: usize,
+    /// The level curves' best measure in the final stage ([`super::plateau`]).
+    pub(super) plateau: Plateau,
+    /// A short solve of a fixed length ([`Self::set_short_solve`]): no plateau test.
+    short_solve: bool,
     pub(super) iterations: usize,
     pub(super) converged: bool,
     pub(super) last_report: StepReport,
@@ -100,6 +105,7 @@ impl FieldSolver {
             *x = f * field_scale;
         }
         self.iterations = 0;
+        self.short_solve = false;
         self.frames = None;
         self.enter_stage(0);
         self.initialize_auxiliaries();
@@ -122,6 +128,8 @@ impl FieldSolver {
             stage,
             stage_iterations: 0,
             slow_iterations: 0,
+            plateau: Plateau::default(),
+            short_solve: false,
             iterations: 0,
             converged: false,
             last_report: StepReport::default(),
@@ -182,7 +190,7 @@ impl FieldSolver {
             let settled = outcome.converged.is_some() || !outcome.accepted || self.slow_iterations >= SETTLING_ITERATIONS;
             let final_stage = self.stage == self.params.schedule.len();
             if final_stage {
-                self.converged = settled || self.curves_settled();
+                self.converged = settled || self.curves_settled() || (outcome.accepted && self.level_curves_settled());
             } else if settled || self.stage_iterations >= self.params.schedule[self.stage].iterations {
                 self.enter_stage(self.stage + 1);
             }
@@ -248,6 +256,13 @@ impl FieldSolver {
         })
     }
 
+    /// Marks this solve as a short one of a fixed length (the start search's probes), until the
+    /// next [`Self::restart`]: the level curves are not measured for the convergence test
+    /// ([`super::plateau`]), so that every probe runs the same iterations.
+    pub(crate) fn set_short_solve(&mut self) {
+        self.short_solve = true;
+    }
+
     /// Replaces the remaining schedule by constant `weights` held until convergence.
     pub fn set_weights(&mut self, weights: Weights) -> Result<(), FieldError> {
         validate_weights(&weights)?;
@@ -262,6 +277,7 @@ impl FieldSolver {
     pub(super) fn retarget(&mut self, degrees: &[f64]) {
         self.problem.set_vertex_targets(degrees);
         self.slow_iterations = 0;
+        self.plateau = Plateau::default();
         self.converged = false;
         self.last_report = self.measure(0, 0, None);
     }
@@ -309,6 +325,7 @@ impl FieldSolver {
         self.stage = stage;
         self.stage_iterations = 0;
         self.slow_iterations = 0;
+        self.plateau = Plateau::default();
         self.converged = false;
         self.problem.set_weights(weights);
         self.lm.reset_damping();
@@ -356,6 +373,24 @@ impl FieldSolver {
             return false;
         }
         curve_energy(&self.problem, &self.x, None) <= SETTLED_CURVE_ENERGY
+    }
+
+    /// Whether the level curves, measured from outside every few final-stage iterations once the
+    /// family is met and `E_angle` is within [`PAPER_ANGLE_ENERGY`], have stopped improving
+    /// ([`super::plateau`]). Not for per-vertex targets (a varying angle), which that measure
+    /// does not know.
+    fn level_curves_settled(&mut self) -> bool {
+        let family = self.problem.family();
+        let vertices = self.vertex_count();
+        if self.short_solve || !Plateau::due(self.stage_iterations, family, vertices) || self.problem.has_vertex_targets() || !self.family_met() {
+            return false;
+        }
+        let accepted = |b| self.lm.accepted_residuals(b);
+        let evaluated = Evaluated { weights: self.problem.weights(), residuals: &accepted };
+        if angle_energy(&self.problem, &self.x, Some(&evaluated)) > PAPER_ANGLE_ENERGY {
+            return false;
+        }
+        self.plateau.settled(self.problem.mesh(), &self.x[..vertices], family)
     }
 
     /// The report at x. `iterated_weights`: the weights of the iteration that moved to x, whose

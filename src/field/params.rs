@@ -106,6 +106,12 @@ pub const SETTLING_ITERATIONS: usize = 3;
 /// can drift for hundreds of iterations when the guides ask for a spacing the family cannot keep.
 pub const SETTLED_CURVE_ENERGY: f64 = 1e-7;
 
+/// The accuracy of the paper's Table 2 (its `E_angle` figures are 9e-6 and below): the largest
+/// unweighted curve term alone (`E_angle` of Eq. 8, or Eq. 13's `E_geo`, `E_asy`) that counts as
+/// reaching the family, for [`crate::initialisation::auto_design`] and for the outside measure's
+/// convergence test (`super::plateau`).
+pub const PAPER_ANGLE_ENERGY: f64 = 1e-5;
+
 /// Unweighted curve terms (as for [`SETTLED_CURVE_ENERGY`]) per curve vertex at which the family
 /// counts as met for the convergence test: a mean squared angle residual of 1e-5, about 0.2° RMS.
 /// Above it, steps that the damping holds back do not count as slow (see
@@ -126,9 +132,11 @@ pub struct FieldParams {
     /// The final stage has converged when [`SETTLING_ITERATIONS`] iterations in a row each lower
     /// the weighted energy `E_pg` by less than this fraction (steps held back by the damping, which
     /// cut μ by half or more, count only once the family is met, [`FAMILY_MET_CURVE_ENERGY`]), or
-    /// when Levenberg–Marquardt meets
-    /// one of its own stopping rules. Past that point the curve term is met and the small
-    /// regularisers only drift the spacing of the family, slowly.
+    /// when Levenberg–Marquardt meets one of its own stopping rules. Past that point the curve
+    /// term is met and the small regularisers only drift the spacing of the family, slowly. Two
+    /// more tests end the stage whatever this tolerance: the curve terms falling to
+    /// [`SETTLED_CURVE_ENERGY`], and, on meshes of 1,000 vertices and more, the level curves
+    /// measured from outside no longer improving (`super::plateau`).
     pub relative_tolerance: f64,
     /// Levenberg–Marquardt settings.
     pub lm: LmOptions,

@@ -190,6 +190,11 @@ impl FieldProblem {
         }
     }
 
+    /// Whether curve vertices have their own target angles ([`Self::set_vertex_targets`]).
+    pub(crate) fn has_vertex_targets(&self) -> bool {
+        self.vertex_targets.is_some()
+    }
+
     /// Gives each curve vertex its own target angle (degrees, one per entry of `curve_vertices`,
     /// validated by the caller). Only meaningful for pseudo-geodesics.
     pub(crate) fn set_vertex_targets(&mut self, degrees: &[f64]) {

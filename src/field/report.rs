@@ -144,6 +144,14 @@ pub(crate) fn curve_energy(problem: &FieldProblem, x: &[f64], evaluated: Option<
     block_squares(problem, x, curves, evaluated).into_iter().map(|(first, rest)| first + rest).sum()
 }
 
+/// The unweighted curve term alone at x: `E_angle` (Eq. 8) for pseudo-geodesics, without the
+/// auxiliaries' constraints; `E_geo` or `E_asy` (Eq. 13) otherwise. Evaluated as [`curve_energy`] is.
+pub(crate) fn angle_energy(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>) -> f64 {
+    let first = problem.first_curve_block();
+    let curves = first..first + problem.curve_vertices().len();
+    block_squares(problem, x, curves, evaluated).into_iter().map(|(angle, _)| angle).sum()
+}
+
 /// Squared residual norms of `blocks` with unit weights, split for pseudo-geodesic curve blocks
 /// into the angle rows (Eq. 8) and the frame rows (Eq. 9–10): from the `evaluated` residuals
 /// where there are some, otherwise evaluated in parallel. Returned in block order so that sums

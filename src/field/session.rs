@@ -6,6 +6,7 @@
 use super::error::FieldError;
 use super::field_solver::{stage_weights, validate_params, FieldSolver, Scales};
 use super::params::FieldParams;
+use super::plateau::Plateau;
 use super::report::StepReport;
 use crate::mesh::TriMesh;
 use crate::solver::DampingState;
@@ -15,7 +16,7 @@ use serde::{Deserialize, Serialize};
 /// First bytes of every saved session.
 pub const SESSION_MAGIC: [u8; 4] = *b"LMLF";
 /// Version of the session layout written by this library.
-pub const SESSION_VERSION: u32 = 1;
+pub const SESSION_VERSION: u32 = 2;
 
 #[derive(Serialize, Deserialize)]
 struct Session {
@@ -27,6 +28,7 @@ struct Session {
     stage: usize,
     stage_iterations: usize,
     slow_iterations: usize,
+    plateau: Plateau,
     iterations: usize,
     converged: bool,
     damping: DampingState,
@@ -86,6 +88,9 @@ fn check_counts(session: &Session) -> Result<(), FieldError> {
     if session.stage_iterations > session.iterations || session.slow_iterations > session.iterations {
         return Err(corrupt("saved stage counters exceed the iteration count"));
     }
+    if !session.plateau.is_valid() {
+        return Err(corrupt("the saved measure of the level curves is out of range"));
+    }
     check_damping(session.damping)
 }
 
@@ -118,6 +123,7 @@ impl FieldSolver {
             stage: self.stage,
             stage_iterations: self.stage_iterations,
             slow_iterations: self.slow_iterations,
+            plateau: self.plateau,
             iterations: self.iterations,
             converged: self.converged,
             damping: self.lm.damping_state(),
@@ -165,6 +171,7 @@ impl FieldSolver {
         solver.stage = session.stage;
         solver.stage_iterations = session.stage_iterations;
         solver.slow_iterations = session.slow_iterations;
+        solver.plateau = session.plateau;
         solver.iterations = session.iterations;
         solver.converged = session.converged;
         solver.lm.restore_damping(session.damping);
@@ -172,3 +179,4 @@ impl FieldSolver {
         Ok(solver)
     }
 }
+

@@ -6,7 +6,7 @@
 use super::error::InitialisationError;
 use super::stroke_field::{field_from_strokes, StrokeOptions};
 use super::target_angle::estimate_target_angle;
-use crate::field::{FieldParams, FieldSolver, StepReport};
+use crate::field::{FieldParams, FieldSolver, StepReport, PAPER_ANGLE_ENERGY};
 use crate::mesh::{TriMesh, Vec3};
 
 /// Iterations per `FieldSolver::step` call; side-vector flips are judged on the last call.
@@ -19,14 +19,14 @@ pub struct AutoDesignOptions {
     pub strokes: StrokeOptions,
     /// Most pseudo-geodesic iterations. Default 400.
     pub max_iterations: usize,
-    /// Largest `E_angle` (the report's unweighted energy) that counts as success. Default 1e-5
-    /// (the accuracy of the paper's Table 2).
+    /// Largest `E_angle` (the report's unweighted energy) that counts as success. Default
+    /// [`PAPER_ANGLE_ENERGY`] (the accuracy of the paper's Table 2).
     pub angle_energy_tolerance: f64,
 }
 
 impl Default for AutoDesignOptions {
     fn default() -> Self {
-        AutoDesignOptions { strokes: StrokeOptions::default(), max_iterations: 400, angle_energy_tolerance: 1e-5 }
+        AutoDesignOptions { strokes: StrokeOptions::default(), max_iterations: 400, angle_energy_tolerance: PAPER_ANGLE_ENERGY }
     }
 }
 

@@ -44,11 +44,10 @@ use serde::{Deserialize, Serialize};
 
 use super::guide_curves::{GuideCurveOptions, GuideFieldBasis};
 use super::proxy::{carried_to, search_proxy};
-use crate::curves::{extract_level_curves, uniform_levels};
 use crate::field::{validate_params, Family, FieldError, FieldParams, FieldSolver};
 use crate::mesh::{TriMesh, Vec3};
 use crate::net::intersection_angles;
-use crate::quality::{family_angles, FamilyAngles};
+use crate::quality::{level_set_angles, FamilyAngles};
 use crate::tracing::{boundary_segments, intersections, trace_guide_set, DEFAULT_CORNER_TURN_DEGREES};
 
 /// Settings of the search.
@@ -471,6 +470,7 @@ fn probe(solver: &mut Option<FieldSolver>, mesh: &TriMesh, params: &FieldParams,
     }
     // Invariant: set just above.
     let solver = solver.as_mut().expect("solver prepared");
+    solver.set_short_solve();
     let report = match solver.step(options.probe_iterations) {
         Ok(report) => report,
         Err(error) => return Ok(Err(format!("short solve failed: {error}"))),
@@ -487,15 +487,9 @@ pub(crate) fn keep_lower<T>(slot: &mut Option<(usize, f64, T)>, index: usize, sc
     }
 }
 
-/// The family measure of the level curves of `field` on `mesh` (the search's judge): `levels`
-/// curves resampled every `spacing_edges` mean edge lengths, their binormals against the smooth
-/// surface normal ([`family_angles`]).
+/// The search's judge: [`level_set_angles`] with the search's count of levels and resampling step.
 pub(crate) fn level_curve_measure(mesh: &TriMesh, field: &[f64], family: Family, options: &SearchOptions) -> Result<FamilyAngles, String> {
-    let levels = uniform_levels(mesh, field, options.levels).map_err(|e| format!("no level curves: {e}"))?;
-    let curves = extract_level_curves(mesh, field, &levels).map_err(|e| format!("no level curves: {e}"))?;
-    let (low, high) = mesh.bounding_box();
-    let spacing = options.spacing_edges * mesh.mean_edge_length();
-    family_angles(&curves, family, spacing, (high - low).norm()).map_err(|e| format!("level curves not measurable: {e}"))
+    level_set_angles(mesh, field, family, options.levels, options.spacing_edges)
 }
 
 /// How a probed family is judged: its score (degrees; lower is better): RMS angle error plus a
@@ -516,7 +510,7 @@ pub(crate) fn family_judgement(measure: &FamilyAngles, family: Family, singular_
     let straight = measure.straight_fraction();
     let degenerate = (matches!(family, Family::PseudoGeodesic { .. }) && straight > MAX_STRAIGHT_FRACTION)
         .then(|| format!("degenerate: {:.0} % of the level curves are nearly straight, where a pseudo-geodesic has no binormal", 100.0 * straight));
-    let score = measure.rms_error_degrees + 0.25 * measure.max_error_degrees + STRAIGHT_PENALTY * straight + SINGULAR_PENALTY * singular_fraction;
+    let score = measure.score() + SINGULAR_PENALTY * singular_fraction;
     Ok(FamilyJudgement { score, degenerate })
 }
 
@@ -548,8 +542,6 @@ pub fn search_start(mesh: &TriMesh, params: FieldParams, options: SearchOptions)
 const STRAIGHT_START_FRACTION: f64 = 0.9;
 /// Above this fraction of nearly straight measured points a pseudo-geodesic family is degenerate.
 const MAX_STRAIGHT_FRACTION: f64 = 0.5;
-/// Score added per unit fraction of nearly straight points (degrees).
-const STRAIGHT_PENALTY: f64 = 10.0;
 /// Score added per unit fraction of singular vertices (degrees).
 const SINGULAR_PENALTY: f64 = 100.0;
 

@@ -26,6 +26,9 @@ use crate::mesh::Vec3;
 /// Default resampling step, in mean edge lengths.
 pub const DEFAULT_SPACING_EDGES: f64 = 3.0;
 
+/// What [`FamilyAngles::score`] adds per unit fraction of nearly straight points, in degrees.
+pub const STRAIGHT_PENALTY_DEGREES: f64 = 10.0;
+
 /// Where a curve misses its family most.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct WorstPoint {
@@ -67,6 +70,13 @@ pub struct FamilyAngles {
 }
 
 impl FamilyAngles {
+    /// One figure to compare measures of the same family by, in degrees (lower is better): the
+    /// RMS error plus a quarter of the largest, plus [`STRAIGHT_PENALTY_DEGREES`] per unit
+    /// fraction of nearly straight points.
+    pub fn score(&self) -> f64 {
+        self.rms_error_degrees + 0.25 * self.max_error_degrees + STRAIGHT_PENALTY_DEGREES * self.straight_fraction()
+    }
+
     /// Fraction of the inner resampled points that are straight (0 when none was sampled).
     pub fn straight_fraction(&self) -> f64 {
         let total = self.measured + self.straight;

@@ -3,7 +3,9 @@
 //! surface normal ([`family_angles`]), and curves of constant slope ([`slope_angles`]).
 
 mod family;
+mod level_set;
 mod slope;
 
-pub use family::{family_angles, polyline_family_angles, CurveAngles, FamilyAngles, WorstPoint, DEFAULT_SPACING_EDGES};
+pub use family::{family_angles, polyline_family_angles, CurveAngles, FamilyAngles, WorstPoint, DEFAULT_SPACING_EDGES, STRAIGHT_PENALTY_DEGREES};
+pub(crate) use level_set::level_set_angles;
 pub use slope::{slope_angles, SlopeAngles};
