@@ -9,7 +9,7 @@ use super::gradient_norm::mean_gradient_norm;
 use super::params::{Family, FieldParams, Weights, FAMILY_MET_CURVE_ENERGY, PAPER_ANGLE_ENERGY, SETTLED_CURVE_ENERGY, SETTLING_ITERATIONS};
 use super::plateau::Plateau;
 use super::problem::FieldProblem;
-use super::report::{angle_energy, curve_energy, problem_frames, Evaluated, StepReport};
+use super::report::{curve_energy, curve_squares, problem_frames, Evaluated, StepReport};
 use crate::mesh::{TriMesh, Vec3};
 use crate::solver::{LeastSquaresProblem, LevenbergMarquardt, LmOptions, SolverError};
 
@@ -353,13 +353,23 @@ impl FieldSolver {
         frames.unwrap_or_else(|| problem_frames(&self.problem, &self.x))
     }
 
+    /// [`curve_squares`] at x from the residuals of the accepted iteration.
+    fn accepted_curve_squares(&self) -> Vec<(f64, f64)> {
+        let accepted = |b| self.lm.accepted_residuals(b);
+        let evaluated = Evaluated { weights: self.problem.weights(), residuals: &accepted };
+        curve_squares(&self.problem, &self.x, Some(&evaluated))
+    }
+
     /// Whether the unweighted curve terms at x ([`curve_energy`], from the residuals of the
     /// accepted iteration), per curve vertex, are within [`FAMILY_MET_CURVE_ENERGY`].
     fn family_met(&self) -> bool {
-        let accepted = |b| self.lm.accepted_residuals(b);
-        let evaluated = Evaluated { weights: self.problem.weights(), residuals: &accepted };
+        self.family_met_in(&self.accepted_curve_squares())
+    }
+
+    /// [`Self::family_met`] for the curve blocks' `squares` ([`curve_squares`]).
+    fn family_met_in(&self, squares: &[(f64, f64)]) -> bool {
         let curve_vertices = self.problem.curve_vertices().len().max(1) as f64;
-        curve_energy(&self.problem, &self.x, Some(&evaluated)) <= FAMILY_MET_CURVE_ENERGY * curve_vertices
+        squares.iter().map(|(curve, frame)| curve + frame).sum::<f64>() <= FAMILY_MET_CURVE_ENERGY * curve_vertices
     }
 
     /// Whether the unweighted curve terms at x ([`curve_energy`]) have fallen to
@@ -367,9 +377,7 @@ impl FieldSolver {
     /// them up to rounding ([`Evaluated`]); only within twice the threshold are they evaluated
     /// again, exactly, with unit weights.
     fn curves_settled(&self) -> bool {
-        let accepted = |b| self.lm.accepted_residuals(b);
-        let evaluated = Evaluated { weights: self.problem.weights(), residuals: &accepted };
-        if curve_energy(&self.problem, &self.x, Some(&evaluated)) > 2.0 * SETTLED_CURVE_ENERGY {
+        if self.accepted_curve_squares().iter().map(|(curve, frame)| curve + frame).sum::<f64>() > 2.0 * SETTLED_CURVE_ENERGY {
             return false;
         }
         curve_energy(&self.problem, &self.x, None) <= SETTLED_CURVE_ENERGY
@@ -382,12 +390,11 @@ impl FieldSolver {
     fn level_curves_settled(&mut self) -> bool {
         let family = self.problem.family();
         let vertices = self.vertex_count();
-        if self.short_solve || !Plateau::due(self.stage_iterations, family, vertices) || self.problem.has_vertex_targets() || !self.family_met() {
+        if self.short_solve || !Plateau::due(self.stage_iterations, family, vertices) || self.problem.has_vertex_targets() {
             return false;
         }
-        let accepted = |b| self.lm.accepted_residuals(b);
-        let evaluated = Evaluated { weights: self.problem.weights(), residuals: &accepted };
-        if angle_energy(&self.problem, &self.x, Some(&evaluated)) > PAPER_ANGLE_ENERGY {
+        let squares = self.accepted_curve_squares();
+        if !self.family_met_in(&squares) || squares.iter().map(|(angle, _)| angle).sum::<f64>() > PAPER_ANGLE_ENERGY {
             return false;
         }
         self.plateau.settled(self.problem.mesh(), &self.x[..vertices], family)

@@ -139,17 +139,15 @@ fn energies(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>
 /// [`Energies`] that says whether the level sets already form the family; from the `evaluated`
 /// residuals where there are some.
 pub(crate) fn curve_energy(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>) -> f64 {
-    let first = problem.first_curve_block();
-    let curves = first..first + problem.curve_vertices().len();
-    block_squares(problem, x, curves, evaluated).into_iter().map(|(first, rest)| first + rest).sum()
+    curve_squares(problem, x, evaluated).into_iter().map(|(curve, frame)| curve + frame).sum()
 }
 
-/// The unweighted curve term alone at x: `E_angle` (Eq. 8) for pseudo-geodesics, without the
-/// auxiliaries' constraints; `E_geo` or `E_asy` (Eq. 13) otherwise. Evaluated as [`curve_energy`] is.
-pub(crate) fn angle_energy(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>) -> f64 {
+/// The unweighted squares of each curve block at x, in order: (`E_angle`'s rows of Eq. 8, the
+/// auxiliaries' rows of Eq. 9–10) for pseudo-geodesics, (`E_geo` or `E_asy` of Eq. 13, 0)
+/// otherwise; from the `evaluated` residuals where there are some.
+pub(crate) fn curve_squares(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>) -> Vec<(f64, f64)> {
     let first = problem.first_curve_block();
-    let curves = first..first + problem.curve_vertices().len();
-    block_squares(problem, x, curves, evaluated).into_iter().map(|(angle, _)| angle).sum()
+    block_squares(problem, x, first..first + problem.curve_vertices().len(), evaluated)
 }
 
 /// Squared residual norms of `blocks` with unit weights, split for pseudo-geodesic curve blocks
