@@ -26,7 +26,7 @@ pub use problem::NetProblem;
 pub use report::{IntersectionReport, NetReport, WebReport};
 pub use session::{NET_SESSION_MAGIC, NET_SESSION_VERSION};
 pub use solver::NetSolver;
-pub use start::{net_start, net_start_search, NetCandidate, NetStart, NetStartKind, CLEARANCE_DEGREES, MAX_TANGENT_AREA, PAIR_HALF_ANGLE_DEGREES, START_CROSSING_DEGREES, TANGENT_PENALTY};
+pub use start::{net_start, net_start_search, NetCandidate, NetStart, NetStartKind, ACCEPTABLE_FAMILY_SCORE, CLEARANCE_DEGREES, MAX_TANGENT_AREA, PAIR_HALF_ANGLE_DEGREES, START_CROSSING_DEGREES, TANGENT_PENALTY};
 pub use strip_net::{strip_levels, strip_net, StripNet, NODE_TOLERANCE_EDGES};
 pub use strip_web::{strip_web, StripWeb};
 pub use web::{extract_web, web_levels, Web, WebLevels, WebVertex};

@@ -8,11 +8,11 @@ use crate::field_support;
 use field_support::{catenary_hausdorff, develop, line_fit};
 use lamella::curves::{extract_level_curves, uniform_levels, LevelCurve};
 use lamella::field::{Family, FieldParams, FieldSolver};
-use lamella::initialisation::{search_start, SearchOptions, StartKind};
+use lamella::initialisation::{search_start, Candidate, SearchOptions, StartKind};
 use lamella::mesh::{TriMesh, Vec3};
 use lamella::quality::{family_angles, FamilyAngles};
 use lamella::strips::{rectifying_strips, StripParams, StripPattern};
-use lamella::surfaces::{cylinder_patch, hyperbolic_paraboloid, CylinderPatch, HyperbolicParaboloid, SplitMix64};
+use lamella::surfaces::{cylinder_patch, hall_roof, hyperbolic_paraboloid, CylinderPatch, HyperbolicParaboloid, SplitMix64};
 
 const RADIUS: f64 = 5.0;
 
@@ -138,6 +138,28 @@ fn the_search_rejects_the_rulings_of_the_cylinder() {
     }
     let winner = &outcome.candidates[outcome.winner];
     assert!(winner.rejected.is_none() && winner.straight_fraction < 0.5, "{winner:?}");
+}
+
+/// The guide candidates follow the heights only when no height scores at most
+/// `SearchOptions::acceptable_score`: on the hall roof at θ = 45° the heights score above the
+/// default, so the guides are probed after them; told that the best height's score is good
+/// enough, the search stops after the heights, with the same winner.
+#[test]
+fn guide_candidates_follow_only_when_no_height_is_good_enough() {
+    let mesh = hall_roof(3_000).into_mesh().expect("the built-in roof is valid");
+    let params = FieldParams::pseudo_geodesic(45.0);
+    let is_height = |c: &&Candidate| matches!(c.kind, StartKind::Height { .. });
+    let strict = search_start(&mesh, params.clone(), SearchOptions::default()).expect("a start");
+    let heights: Vec<&Candidate> = strict.candidates.iter().filter(is_height).collect();
+    let best_height = heights.iter().filter_map(|c| c.score).fold(f64::INFINITY, f64::min);
+    assert!(best_height.is_finite() && best_height > SearchOptions::default().acceptable_score, "best height {best_height}");
+    assert!(strict.candidates.len() > heights.len(), "no guide candidate after heights scoring {best_height}");
+    assert!(strict.candidates[heights.len()..].iter().all(|c| matches!(c.kind, StartKind::Guides { .. })));
+
+    let lenient = SearchOptions { acceptable_score: best_height, ..SearchOptions::default() };
+    let outcome = search_start(&mesh, params, lenient).expect("a start");
+    assert_eq!(outcome.candidates.len(), heights.len(), "{:?}", outcome.candidates.iter().map(|c| c.kind.describe()).collect::<Vec<_>>());
+    assert_eq!(outcome.candidates[outcome.winner].score, Some(best_height));
 }
 
 #[test]
