@@ -302,20 +302,19 @@ fn where_every_family_is_nearly_straight_the_search_falls_back_on_the_least_stra
     assert!(!pattern.verdict.is_acceptable() || (worst <= 2.5 && pattern.metrics.flipped_quads == 0), "accepted with a quad {worst}° off");
 }
 
-/// A patch of the outer side of a torus (radii 6 and 2, 92° × 138°), a 55 × 55 grid jittered by
-/// up to 22 % of a cell, cells split along the shorter diagonal: doubly curved, 3,025 vertices,
-/// and none of the library's generators.
-fn torus_patch() -> TriMesh {
+/// A 55 × 55 grid over `[u0, u1] × [v0, v1]` mapped by `point`, its inner points jittered by up
+/// to 22 % of a cell in each parameter, cells split along the shorter diagonal: 3,025 vertices.
+/// (The meshes of `cargo bench --bench unseen_surfaces`, with the same seeds.)
+fn jittered_grid(point: impl Fn(f64, f64) -> Vec3, [u0, u1, v0, v1]: [f64; 4], seed: u64) -> TriMesh {
     const GRID: usize = 55;
-    let point = |u: f64, v: f64| Vec3::new((6.0 + 2.0 * v.cos()) * u.cos(), (6.0 + 2.0 * v.cos()) * u.sin(), 2.0 * v.sin());
-    let (du, dv) = (1.6 / (GRID - 1) as f64, 2.4 / (GRID - 1) as f64);
-    let mut rng = SplitMix64::new(4);
+    let (du, dv) = ((u1 - u0) / (GRID - 1) as f64, (v1 - v0) / (GRID - 1) as f64);
+    let mut rng = SplitMix64::new(seed);
     let inner = |k: usize| k > 0 && k < GRID - 1;
     let mut positions = Vec::with_capacity(GRID * GRID);
     for j in 0..GRID {
         for i in 0..GRID {
-            let u = -0.8 + i as f64 * du + if inner(i) { rng.symmetric(0.22 * du) } else { 0.0 };
-            let v = -1.2 + j as f64 * dv + if inner(j) { rng.symmetric(0.22 * dv) } else { 0.0 };
+            let u = u0 + i as f64 * du + if inner(i) { rng.symmetric(0.22 * du) } else { 0.0 };
+            let v = v0 + j as f64 * dv + if inner(j) { rng.symmetric(0.22 * dv) } else { 0.0 };
             positions.push(point(u, v));
         }
     }
@@ -329,6 +328,46 @@ fn torus_patch() -> TriMesh {
         }
     }
     TriMesh::from_vertices_and_faces(positions, faces).expect("a valid grid mesh")
+}
+
+/// A patch of the outer side of a torus (radii 6 and 2, 92° × 138°): doubly curved, and none of
+/// the library's generators.
+fn torus_patch() -> TriMesh {
+    let point = |u: f64, v: f64| Vec3::new((6.0 + 2.0 * v.cos()) * u.cos(), (6.0 + 2.0 * v.cos()) * u.sin(), 2.0 * v.sin());
+    jittered_grid(point, [-0.8, 0.8, -1.2, 1.2], 4)
+}
+
+/// The monkey saddle `z = (x³ − 3xy²)/25` over 8 m × 8 m.
+fn monkey_saddle() -> TriMesh {
+    jittered_grid(|u, v| Vec3::new(u, v, (u * u * u - 3.0 * u * v * v) / 25.0), [-4.0, 4.0, -4.0, 4.0], 6)
+}
+
+/// A probe whose level curves have stopped improving far above the best score so far is cut
+/// short (`SearchOptions::stall_factor`). On the monkey saddle at θ = 45° no height is good
+/// enough, and most of the guide candidates that follow stall. The rule changes nothing but the
+/// stalled candidates: with it off, every other candidate is the same to the bit, the same one
+/// wins with the same field, and each candidate it cut scores above the winner after its full
+/// probe.
+#[test]
+fn stalled_probes_are_cut_short_without_changing_the_winner() {
+    let mesh = monkey_saddle();
+    let params = FieldParams::pseudo_geodesic(45.0);
+    let cut = search_start(&mesh, params.clone(), SearchOptions::default()).expect("a start");
+    let full = search_start(&mesh, params, SearchOptions { stall_factor: f64::INFINITY, ..SearchOptions::default() }).expect("a start");
+    let stalled = |c: &Candidate| c.rejected.as_deref().is_some_and(|r| r.starts_with("stalled"));
+    assert!(cut.candidates.iter().filter(|c| stalled(c)).count() >= 3, "{:?}", cut.candidates);
+    assert!(!full.candidates.iter().any(stalled));
+    assert_eq!(cut.candidates.len(), full.candidates.len());
+    assert_eq!(cut.winner, full.winner);
+    let best = full.candidates[full.winner].score.expect("an accepted winner");
+    for (c, f) in cut.candidates.iter().zip(&full.candidates) {
+        if stalled(c) {
+            assert!(f.score.is_none_or(|s| s > best), "{} stalled, but scores {:?} after its full probe (best {best})", c.kind.describe(), f.score);
+        } else {
+            assert_eq!(c, f);
+        }
+    }
+    assert_eq!(cut.solver.field(), full.solver.field());
 }
 
 #[test]
