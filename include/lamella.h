@@ -385,8 +385,8 @@ typedef struct LmlCandidate {
   double start_angle_degrees;
   // 1 when the candidate was scored (`score` valid), 0 when it was rejected.
   uint32_t scored;
-  // 1 when it was rejected (degenerate family, unmeasurable curves or a failed solve; the
-  // reason is in `lml_search_candidate_text`).
+  // 1 when it was rejected (degenerate family, unmeasurable curves, a failed or stalled
+  // solve; the reason is in `lml_search_candidate_text`).
   uint32_t rejected;
   // Lower is better: RMS + a quarter of the max angle error along the level curves, plus
   // penalties for nearly straight pieces and singular vertices.

@@ -53,7 +53,7 @@ namespace Lamella
         public double StartAngleDegrees { get; }
         /// <summary>True when the candidate was scored (<see cref="Score"/> valid).</summary>
         public bool IsScored { get; }
-        /// <summary>True when it was rejected (degenerate family, unmeasurable curves, a failed solve: <see cref="Text"/> says which).</summary>
+        /// <summary>True when it was rejected (degenerate family, unmeasurable curves, a failed or stalled solve: <see cref="Text"/> says which).</summary>
         public bool IsRejected { get; }
         /// <summary>Lower is better: RMS + a quarter of the max angle error along the level curves, plus penalties for nearly straight pieces and singular vertices.</summary>
         public double Score { get; }

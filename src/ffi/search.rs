@@ -56,8 +56,8 @@ pub struct LmlCandidate {
     pub start_angle_degrees: f64,
     /// 1 when the candidate was scored (`score` valid), 0 when it was rejected.
     pub scored: u32,
-    /// 1 when it was rejected (degenerate family, unmeasurable curves or a failed solve; the
-    /// reason is in `lml_search_candidate_text`).
+    /// 1 when it was rejected (degenerate family, unmeasurable curves, a failed or stalled
+    /// solve; the reason is in `lml_search_candidate_text`).
     pub rejected: u32,
     /// Lower is better: RMS + a quarter of the max angle error along the level curves, plus
     /// penalties for nearly straight pieces and singular vertices.
