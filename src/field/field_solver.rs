@@ -9,7 +9,7 @@ use super::gradient_norm::mean_gradient_norm;
 use super::params::{Family, FieldParams, Weights, FAMILY_MET_CURVE_ENERGY, PAPER_ANGLE_ENERGY, SETTLED_CURVE_ENERGY, SETTLING_ITERATIONS};
 use super::plateau::Plateau;
 use super::problem::FieldProblem;
-use super::report::{curve_energy, curve_squares, problem_frames, Evaluated, StepReport};
+use super::report::{curve_energy, curve_squares, curve_total, problem_frames, Evaluated, StepReport};
 use crate::mesh::{TriMesh, Vec3};
 use crate::solver::{LeastSquaresProblem, LevenbergMarquardt, LmOptions, SolverError};
 
@@ -369,7 +369,7 @@ impl FieldSolver {
     /// [`Self::family_met`] for the curve blocks' `squares` ([`curve_squares`]).
     fn family_met_in(&self, squares: &[(f64, f64)]) -> bool {
         let curve_vertices = self.problem.curve_vertices().len().max(1) as f64;
-        squares.iter().map(|(curve, frame)| curve + frame).sum::<f64>() <= FAMILY_MET_CURVE_ENERGY * curve_vertices
+        curve_total(squares) <= FAMILY_MET_CURVE_ENERGY * curve_vertices
     }
 
     /// Whether the unweighted curve terms at x ([`curve_energy`]) have fallen to
@@ -377,7 +377,7 @@ impl FieldSolver {
     /// them up to rounding ([`Evaluated`]); only within twice the threshold are they evaluated
     /// again, exactly, with unit weights.
     fn curves_settled(&self) -> bool {
-        if self.accepted_curve_squares().iter().map(|(curve, frame)| curve + frame).sum::<f64>() > 2.0 * SETTLED_CURVE_ENERGY {
+        if curve_total(&self.accepted_curve_squares()) > 2.0 * SETTLED_CURVE_ENERGY {
             return false;
         }
         curve_energy(&self.problem, &self.x, None) <= SETTLED_CURVE_ENERGY

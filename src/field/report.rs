@@ -139,7 +139,12 @@ fn energies(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>
 /// [`Energies`] that says whether the level sets already form the family; from the `evaluated`
 /// residuals where there are some.
 pub(crate) fn curve_energy(problem: &FieldProblem, x: &[f64], evaluated: Option<&Evaluated<'_>>) -> f64 {
-    curve_squares(problem, x, evaluated).into_iter().map(|(curve, frame)| curve + frame).sum()
+    curve_total(&curve_squares(problem, x, evaluated))
+}
+
+/// The sum of both parts of every curve block's `squares` ([`curve_squares`]): [`curve_energy`].
+pub(crate) fn curve_total(squares: &[(f64, f64)]) -> f64 {
+    squares.iter().map(|(curve, frame)| curve + frame).sum()
 }
 
 /// The unweighted squares of each curve block at x, in order: (`E_angle`'s rows of Eq. 8, the

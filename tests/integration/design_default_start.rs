@@ -7,8 +7,8 @@ use crate::field_support;
 
 use field_support::{catenary_hausdorff, develop, line_fit};
 use lamella::curves::{extract_level_curves, uniform_levels, LevelCurve};
-use lamella::field::{Family, FieldParams, FieldSolver};
-use lamella::initialisation::{search_start, Candidate, SearchOptions, StartKind};
+use lamella::field::{Family, FieldError, FieldParams, FieldSolver};
+use lamella::initialisation::{search_start, Candidate, SearchError, SearchOptions, StartKind};
 use lamella::mesh::{TriMesh, Vec3};
 use lamella::quality::{family_angles, FamilyAngles};
 use lamella::strips::{rectifying_strips, StripParams, StripPattern};
@@ -160,6 +160,33 @@ fn guide_candidates_follow_only_when_no_height_is_good_enough() {
     let outcome = search_start(&mesh, params, lenient).expect("a start");
     assert_eq!(outcome.candidates.len(), heights.len(), "{:?}", outcome.candidates.iter().map(|c| c.kind.describe()).collect::<Vec<_>>());
     assert_eq!(outcome.candidates[outcome.winner].score, Some(best_height));
+}
+
+/// Search options out of range are refused before any probe, naming the option.
+#[test]
+fn search_options_out_of_range_are_refused_by_name() {
+    let mesh = hall_roof(600).into_mesh().expect("the built-in roof is valid");
+    let cases: [(&str, SearchOptions); 10] = [
+        ("probe_iterations", SearchOptions { probe_iterations: 0, ..SearchOptions::default() }),
+        ("levels", SearchOptions { levels: 1, ..SearchOptions::default() }),
+        ("spacing_edges", SearchOptions { spacing_edges: f64::NAN, ..SearchOptions::default() }),
+        ("directions", SearchOptions { directions: 0, ..SearchOptions::default() }),
+        ("guides", SearchOptions { guides: 1, ..SearchOptions::default() }),
+        ("guide_angles", SearchOptions { guide_angles: vec![60.0, 180.0], ..SearchOptions::default() }),
+        ("proxy_vertices", SearchOptions { proxy_vertices: 50, ..SearchOptions::default() }),
+        ("acceptable_score", SearchOptions { acceptable_score: f64::NAN, ..SearchOptions::default() }),
+        ("stall_factor", SearchOptions { stall_factor: 0.5, ..SearchOptions::default() }),
+        ("stall_factor", SearchOptions { stall_factor: f64::NAN, ..SearchOptions::default() }),
+    ];
+    for (name, options) in cases {
+        match search_start(&mesh, FieldParams::pseudo_geodesic(60.0), options) {
+            Err(SearchError::Field(FieldError::InvalidParameter { name: named, .. })) => assert_eq!(named, name),
+            Err(other) => panic!("{name}: {other}"),
+            Ok(_) => panic!("{name}: accepted"),
+        }
+    }
+    let never = SearchOptions { stall_factor: f64::INFINITY, ..SearchOptions::default() };
+    assert!(search_start(&mesh, FieldParams::pseudo_geodesic(60.0), never).is_ok());
 }
 
 #[test]
