@@ -123,6 +123,21 @@ impl SparseCholesky {
         std::mem::take(&mut self.original_position)
     }
 
+    /// Floating-point operations of one numeric factorisation, from the supernodal structure:
+    /// a supernode of w columns with b rows below them costs w³/3 (its diagonal block), b·w²
+    /// (the rows below) and b²·w (its update of the later columns).
+    pub fn flops(&self) -> f64 {
+        let SymbolicCholeskyRaw::Supernodal(symbolic) = self.symbolic.raw() else { return 0.0 };
+        let (begin, end, rows) = (symbolic.supernode_begin(), symbolic.supernode_end(), symbolic.col_ptr_for_row_idx());
+        (0..symbolic.n_supernodes())
+            .map(|s| {
+                let w = (end[s] - begin[s]) as f64;
+                let b = (rows[s + 1] - rows[s]) as f64;
+                w * w * w / 3.0 + b * w * w + b * b * w
+            })
+            .sum()
+    }
+
     /// Number of values of the permuted storage.
     pub fn value_count(&self) -> usize {
         self.permuted_pattern.row_idx().len()

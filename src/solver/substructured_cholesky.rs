@@ -21,7 +21,7 @@ use faer::linalg::matmul::triangular::{self, BlockStructure};
 use faer::{Accum, Conj, Mat, MatMut, Par};
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use super::bisection::{bisect, Part};
+use super::bisection::{bisect, separator_needs_weighing, Part};
 use super::sparse_cholesky::SparseCholesky;
 use super::SolverError;
 
@@ -58,16 +58,7 @@ impl SubstructuredCholesky {
     /// pattern `col_ptr`, `row_idx` (sorted rows, diagonal present).
     pub fn analyse(col_ptr: &[usize], row_idx: &[usize]) -> Result<Self, SolverError> {
         let n = col_ptr.len() - 1;
-        let parts = bisect(col_ptr, row_idx).unwrap_or_else(|| vec![Part::Domain(0); n]);
-        let separator: Vec<usize> = (0..n).filter(|&v| parts[v] == Part::Separator).collect();
-        // The two domains' orderings and symbolic analyses are independent: run them at once.
-        let analyse = |d: u8| Domain::analyse(col_ptr, row_idx, &parts, d, &separator);
-        let mut domains = if parts.contains(&Part::Domain(1)) {
-            let (first, second) = rayon::join(|| analyse(0), || analyse(1));
-            vec![first?, second?]
-        } else {
-            vec![analyse(0)?]
-        };
+        let (mut domains, separator) = split_or_whole(col_ptr, row_idx)?;
         let mut offset = 0;
         for domain in &mut domains {
             domain.offset = offset;
@@ -199,6 +190,33 @@ fn for_each_domain(domains: &mut [Domain], f: impl Fn(&mut Domain) + Sync) {
     }
 }
 
+/// The domains and the separator: two domains when the bisection finds a separator small enough
+/// ([`bisect`]) and, where it is above the size that pays without weighing
+/// ([`separator_needs_weighing`]), the split's work on two threads is below the whole matrix's
+/// factorisation; else one domain and no separator. The split's work: the larger domain's sparse
+/// factorisation (its trailing separator block included), then R⁽ᵈ⁾R⁽ᵈ⁾ᵀ (s³/3, one per
+/// domain side by side) and the Cholesky of Ã (s³/3). The choice depends on the pattern only,
+/// not on the threads.
+fn split_or_whole(col_ptr: &[usize], row_idx: &[usize]) -> Result<(Vec<Domain>, Vec<usize>), SolverError> {
+    let n = col_ptr.len() - 1;
+    let whole = || Domain::analyse(col_ptr, row_idx, &vec![Part::Domain(0); n], 0, &[]);
+    let Some(parts) = bisect(col_ptr, row_idx) else { return Ok((vec![whole()?], Vec::new())) };
+    let separator: Vec<usize> = (0..n).filter(|&v| parts[v] == Part::Separator).collect();
+    // The two domains' orderings and symbolic analyses are independent: run them at once.
+    let analyse = |d: u8| Domain::analyse(col_ptr, row_idx, &parts, d, &separator);
+    let (first, second) = rayon::join(|| analyse(0), || analyse(1));
+    let domains = vec![first?, second?];
+    if separator_needs_weighing(n, separator.len()) {
+        let whole = whole()?;
+        let dense = 2.0 * (separator.len() as f64).powi(3) / 3.0;
+        let split = domains.iter().map(|d| d.cholesky.flops()).fold(0.0, f64::max) + dense;
+        if split >= whole.cholesky.flops() {
+            return Ok((vec![whole], Vec::new()));
+        }
+    }
+    Ok((domains, separator))
+}
+
 /// An s × s dense matrix stored with its row count rounded up to a multiple of 8, the zero rows
 /// beyond s included, so that its column stride has no padding of its own (use the view of the
 /// first s rows). faer's SIMD kernels read the padding of a column; `Mat::zeros` leaves it as
@@ -314,6 +332,18 @@ mod tests {
             Self { n: w * h, cliques, vectors, shift }
         }
 
+        /// Adds `count` cliques that each couple two pairs of far-apart variables.
+        fn with_long_range_couplings(mut self, count: usize) -> Self {
+            for k in 0..count {
+                let (a, b) = ((k * 7919) % (self.n - 1), (k * 104_729 + self.n / 2) % (self.n - 1));
+                if a.abs_diff(b) > 1 {
+                    self.cliques.push([a, a + 1, b, b + 1]);
+                    self.vectors.push([0.3, -0.2, 0.25, -0.1]);
+                }
+            }
+            self
+        }
+
         /// Upper CSC pattern (sorted rows, diagonal present).
         fn pattern(&self) -> (Vec<usize>, Vec<usize>) {
             let mut rows: Vec<Vec<usize>> = (0..self.n).map(|c| vec![c]).collect();
@@ -406,6 +436,23 @@ mod tests {
     #[test]
     fn small_matrices_use_one_domain() {
         let problem = QuadProblem::new(12, 10, 1e-2);
+        let (cholesky, x, b) = solve(&problem);
+        assert_eq!(cholesky.domains.len(), 1);
+        assert!(cholesky.separator.is_empty());
+        let ax = problem.multiply(&x);
+        let worst = ax.iter().zip(&b).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        assert!(worst < 1e-9, "max |Ax − b| = {worst:e}");
+    }
+
+    #[test]
+    fn a_separator_swollen_by_long_range_couplings_keeps_one_domain() {
+        // The bisection proposes a separator of several hundred variables (above 4√n, so it is
+        // weighed): its dense Schur complement would cost more than factorising the whole.
+        let problem = QuadProblem::new(100, 100, 1e-3).with_long_range_couplings(100);
+        let (col_ptr, row_idx) = problem.pattern();
+        let parts = bisect(&col_ptr, &row_idx).expect("a split is proposed");
+        let proposed = parts.iter().filter(|&&p| p == Part::Separator).count();
+        assert!(separator_needs_weighing(problem.n, proposed), "separator of {proposed}");
         let (cholesky, x, b) = solve(&problem);
         assert_eq!(cholesky.domains.len(), 1);
         assert!(cholesky.separator.is_empty());
