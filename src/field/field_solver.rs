@@ -11,7 +11,7 @@ use super::plateau::Plateau;
 use super::problem::FieldProblem;
 use super::report::{curve_energy, curve_squares, curve_total, problem_frames, Evaluated, StepReport};
 use crate::mesh::{TriMesh, Vec3};
-use crate::solver::{LeastSquaresProblem, LevenbergMarquardt, LmOptions, SolverError};
+use crate::solver::{LeastSquaresProblem, LevenbergMarquardt, LmOptions, SolverError, SplitWork};
 
 /// The factors between the caller's units and the normalised problem.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -59,7 +59,18 @@ impl FieldSolver {
     /// Prepares the optimisation of `initial_field` (one value per vertex) on `mesh`.
     /// The family is taken by name ([`super::Family::by_name`]): a pseudo-geodesic angle of 0°,
     /// 90° or 180° optimises the asymptotic or geodesic energy of Eq. 13.
-    pub fn new(mesh: &TriMesh, initial_field: &[f64], mut params: FieldParams) -> Result<FieldSolver, FieldError> {
+    pub fn new(mesh: &TriMesh, initial_field: &[f64], params: FieldParams) -> Result<FieldSolver, FieldError> {
+        Self::prepare(mesh, initial_field, params, SplitWork::Span)
+    }
+
+    /// [`Self::new`] for a solve that runs beside another one, sharing the two cores (a probe of
+    /// the start search): its reduced matrix is split only where that lowers the work of both
+    /// domains together.
+    pub(crate) fn new_sharing_cores(mesh: &TriMesh, initial_field: &[f64], params: FieldParams) -> Result<FieldSolver, FieldError> {
+        Self::prepare(mesh, initial_field, params, SplitWork::Total)
+    }
+
+    fn prepare(mesh: &TriMesh, initial_field: &[f64], mut params: FieldParams, work: SplitWork) -> Result<FieldSolver, FieldError> {
         validate_params(&params)?;
         params.family = params.family.by_name();
         validate_field(mesh, initial_field)?;
@@ -71,7 +82,7 @@ impl FieldSolver {
         let field_scale = 1.0 / gradient;
         let gradient_target = params.gradient_target.map_or(1.0, |r| r * field_scale / length_scale);
         let mut x: Vec<f64> = initial_field.iter().map(|f| f * field_scale).collect();
-        let mut solver = FieldSolver::assemble(unit_mesh, params, gradient_target, Scales { field: field_scale, length: length_scale })?;
+        let mut solver = FieldSolver::assemble(unit_mesh, params, gradient_target, Scales { field: field_scale, length: length_scale }, work)?;
         x.resize(solver.x.len(), 0.0);
         solver.x = x;
         solver.initialize_auxiliaries();
@@ -113,11 +124,12 @@ impl FieldSolver {
         Ok(())
     }
 
-    /// A solver in its first stage with all variables zero, on an already unit-scaled mesh.
-    pub(crate) fn assemble(unit_mesh: TriMesh, params: FieldParams, gradient_target: f64, scales: Scales) -> Result<FieldSolver, FieldError> {
+    /// A solver in its first stage with all variables zero, on an already unit-scaled mesh, its
+    /// reduced matrix split where that lowers `work`.
+    pub(crate) fn assemble(unit_mesh: TriMesh, params: FieldParams, gradient_target: f64, scales: Scales, work: SplitWork) -> Result<FieldSolver, FieldError> {
         let (stage, weights) = stage_weights(&params, 0);
         let problem = FieldProblem::new(unit_mesh, params.family, weights, gradient_target);
-        let lm = LevenbergMarquardt::new(&problem, params.lm.clone())?;
+        let lm = LevenbergMarquardt::with_split_work(&problem, params.lm.clone(), work)?;
         let x = vec![0.0; problem.variable_count()];
         Ok(FieldSolver {
             problem,

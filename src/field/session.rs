@@ -9,7 +9,7 @@ use super::params::FieldParams;
 use super::plateau::Plateau;
 use super::report::StepReport;
 use crate::mesh::TriMesh;
-use crate::solver::DampingState;
+use crate::solver::{DampingState, SplitWork};
 use bincode::Options;
 use serde::{Deserialize, Serialize};
 
@@ -148,7 +148,7 @@ impl FieldSolver {
             return Err(corrupt(format!("saved {name} {value:e} is not a normal positive number")));
         }
         check_counts(&session)?;
-        let mut solver = FieldSolver::assemble(session.unit_mesh, session.params, session.gradient_target, session.scales)?;
+        let mut solver = FieldSolver::assemble(session.unit_mesh, session.params, session.gradient_target, session.scales, SplitWork::Span)?;
         if session.x.len() != solver.x.len() {
             return Err(corrupt(format!("{} saved variables, the mesh needs {}", session.x.len(), solver.x.len())));
         }

@@ -358,13 +358,9 @@ impl StartSearch {
             self.solvers = [None, None];
             return FieldSolver::new(&self.mesh, &field, params).map_err(SearchError::Field);
         }
-        let field = probed;
-        let mut solver = match self.solvers.iter_mut().find_map(Option::take) {
-            Some(solver) => solver,
-            None => FieldSolver::new(&self.mesh, &field, params.clone()).map_err(SearchError::Field)?,
-        };
-        solver.restart(&field, params).map_err(SearchError::Field)?;
-        Ok(solver)
+        // A new solver, not a probe's: the design's solve has both cores to itself.
+        self.solvers = [None, None];
+        FieldSolver::new(&self.mesh, &probed, params).map_err(SearchError::Field)
     }
 
     fn has_acceptable(&self) -> bool {
@@ -479,7 +475,8 @@ fn probe(solver: &mut Option<FieldSolver>, mesh: &TriMesh, params: &FieldParams,
     let family = params.family;
     let restarted = match solver.as_mut() {
         Some(solver) => solver.restart(start.field, params),
-        None => FieldSolver::new(mesh, start.field, params).map(|new| *solver = Some(new)),
+        // Two probes run side by side.
+        None => FieldSolver::new_sharing_cores(mesh, start.field, params).map(|new| *solver = Some(new)),
     };
     if let Err(error) = restarted {
         return match error {

@@ -1,7 +1,8 @@
-//! One level of nested dissection of the reduced normal matrix's graph: a vertex separator S
-//! that splits the global variables into two domains no block couples (George 1973; the
-//! bisecting coordinate is the difference of the graph distances to the two ends of a
-//! pseudo-diameter, found as in George & Liu 1979).
+//! One level of nested dissection of the reduced normal matrix's graph: vertex separators S
+//! that split the global variables into two domains no block couples (George 1973). Each cut's
+//! bisecting coordinate is the difference of the graph distances to two far-apart vertices: the
+//! ends of a pseudo-diameter (found as in George & Liu 1979) or of a second path across it;
+//! [`super::substructured_cholesky`] takes the cut whose factorisation costs least.
 //!
 //! Two vertices are adjacent when an entry of the pattern couples them, i.e. when some block or
 //! local group involves both. Every pair adjacent across the split has its second vertex in S, so
@@ -16,12 +17,11 @@ const MIN_DIMENSION: usize = 400;
 /// factorisations; long-range couplings (possible in a general least-squares problem) make
 /// separators grow towards a fraction of n.
 const MAX_SEPARATOR_DIVISOR: usize = 8;
-/// Separators up to `MAX_SEPARATOR_PER_ROOT`·√n are small without weighing them: a surface
-/// mesh's pattern with one variable per vertex splits with s ≈ 2.2√n (the hall roof at 600 to
-/// 50,000 vertices, before the level jets; 3.4√n with them). With several variables per vertex
-/// (the fields of a net, a vertex's position) s grows with their number, and whether the split
-/// pays is weighed against the factorisation of the whole ([`separator_needs_weighing`]).
-const MAX_SEPARATOR_PER_ROOT: f64 = 4.0;
+
+/// Cuts are proposed with separators up to this factor above the smallest: the cheapest split
+/// has had a separator within 10 % of the smallest (nets, webs and fields of 1,400 to 200,000
+/// vertices), and each cut proposed costs its two domains' symbolic analyses.
+const SEPARATOR_SLACK: f64 = 1.25;
 
 /// The part of a variable in a bisection.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -31,43 +31,46 @@ pub(crate) enum Part {
     Separator,
 }
 
-/// Whether a separator of `separator` variables splitting `n` is above `MAX_SEPARATOR_PER_ROOT`·√n,
-/// so that the split must be weighed against the factorisation of the whole.
-pub(crate) fn separator_needs_weighing(n: usize, separator: usize) -> bool {
-    separator as f64 > MAX_SEPARATOR_PER_ROOT * (n as f64).sqrt()
-}
-
-/// Splits the variables of the symmetric pattern given by its upper triangle (CSC, `col_ptr`,
-/// `row_idx`) into two domains and a separator. `None` when splitting cannot pay: a small or
-/// disconnected graph, or a separator above n / `MAX_SEPARATOR_DIVISOR`.
-pub(crate) fn bisect(col_ptr: &[usize], row_idx: &[usize]) -> Option<Vec<Part>> {
+/// Cuts of the variables of the symmetric pattern given by its upper triangle (CSC, `col_ptr`,
+/// `row_idx`) into two domains and a separator, each balanced and with a separator of at most
+/// n / `MAX_SEPARATOR_DIVISOR` variables and at most [`SEPARATOR_SLACK`] times the smallest,
+/// distinct, in a fixed order. Empty when splitting cannot pay: a small or disconnected graph, or
+/// only separators above n / `MAX_SEPARATOR_DIVISOR`.
+///
+/// Each cut follows the coordinate d_p − d_q of the graph distances to two far-apart vertices p,
+/// q: the ends a, b of a pseudo-diameter, and the ends c, d of a second path across it (c the
+/// vertex farthest from both a and b, d the vertex farthest from c), in the pairs (a, b), (c, d),
+/// (a, c), (a, d), (b, c), (b, d). On a rectangle a, b are opposite corners and c, d the other
+/// two, so a pair along a side cuts across the short way, where the pseudo-diameter alone cuts
+/// diagonally; on an irregular mesh the cuts' separators differ by up to half.
+pub(crate) fn candidate_cuts(col_ptr: &[usize], row_idx: &[usize]) -> Vec<Vec<Part>> {
     let n = col_ptr.len() - 1;
     if n < MIN_DIMENSION {
-        return None;
+        return Vec::new();
     }
     let graph = Adjacency::from_upper(col_ptr, row_idx);
     let from_first = graph.distances(0);
     if from_first.contains(&u32::MAX) {
-        return None;
+        return Vec::new();
     }
-    // Ends a, b of a pseudo-diameter; the bisecting coordinate d_a − d_b runs from a to b.
     let a = farthest(&from_first);
     let from_a = graph.distances(a);
-    let from_b = graph.distances(farthest(&from_a));
-    let mut order: Vec<usize> = (0..n).collect();
-    order.sort_unstable_by_key(|&v| (from_a[v] as i64 - from_b[v] as i64, v));
-
-    // Domain 0 takes the first k variables in that order; the separator is the boundary of the
-    // rest towards it. A second pass sizes k so that the two interiors balance.
-    let mut parts = graph.split(&order, n / 2);
-    let separator = parts.iter().filter(|&&p| p == Part::Separator).count();
-    if separator > 0 && separator < n {
-        parts = graph.split(&order, (n - separator) / 2);
+    let b = farthest(&from_a);
+    let from_b = graph.distances(b);
+    let c = (0..n).max_by_key(|&v| (from_a[v].min(from_b[v]), v)).unwrap_or(0);
+    let from_c = graph.distances(c);
+    let from_d = graph.distances(farthest(&from_c));
+    let ends = [&from_a, &from_b, &from_c, &from_d];
+    let mut cuts: Vec<(usize, Vec<Part>)> = Vec::new();
+    for (p, q) in [(0, 1), (2, 3), (0, 2), (0, 3), (1, 2), (1, 3)] {
+        let Some(parts) = graph.balanced_split(ends[p], ends[q]) else { continue };
+        let separator = parts.iter().filter(|&&part| part == Part::Separator).count();
+        if separator * MAX_SEPARATOR_DIVISOR <= n && cuts.iter().all(|(_, cut)| *cut != parts) {
+            cuts.push((separator, parts));
+        }
     }
-    let count = |part: Part| parts.iter().filter(|&&p| p == part).count();
-    let separator = count(Part::Separator);
-    let balanced = count(Part::Domain(0)) > 0 && count(Part::Domain(1)) > 0;
-    (balanced && separator * MAX_SEPARATOR_DIVISOR <= n).then_some(parts)
+    let smallest = cuts.iter().map(|&(separator, _)| separator).min().unwrap_or(0);
+    cuts.into_iter().filter(|&(separator, _)| separator as f64 <= SEPARATOR_SLACK * smallest as f64).map(|(_, parts)| parts).collect()
 }
 
 /// The last vertex reached at the greatest distance (ties go to the larger index).
@@ -129,6 +132,23 @@ impl Adjacency {
         distance
     }
 
+    /// The split along the coordinate `from_p − from_q` (graph distances to two ends) whose two
+    /// interiors balance: domain 0 takes the first k variables in that order, the separator is
+    /// the boundary of the rest towards it, and a second pass sizes k so that the interiors hold
+    /// about as many variables. `None` when a domain is empty.
+    fn balanced_split(&self, from_p: &[u32], from_q: &[u32]) -> Option<Vec<Part>> {
+        let n = from_p.len();
+        let mut order: Vec<usize> = (0..n).collect();
+        order.sort_unstable_by_key(|&v| (from_p[v] as i64 - from_q[v] as i64, v));
+        let mut parts = self.split(&order, n / 2);
+        let separator = parts.iter().filter(|&&p| p == Part::Separator).count();
+        if separator > 0 && separator < n {
+            parts = self.split(&order, (n - separator) / 2);
+        }
+        let count = |part: Part| parts.iter().filter(|&&p| p == part).count();
+        (count(Part::Domain(0)) > 0 && count(Part::Domain(1)) > 0).then_some(parts)
+    }
+
     /// Domain 0 = the first `k` variables of `order`; the others adjacent to it form the
     /// separator; the rest is domain 1.
     fn split(&self, order: &[usize], k: usize) -> Vec<Part> {
@@ -166,34 +186,80 @@ mod tests {
         (col_ptr, row_idx)
     }
 
-    #[test]
-    fn separator_cuts_every_coupling_between_the_domains() {
-        let (w, h) = (60, 25);
-        let (col_ptr, row_idx) = grid(w, h);
-        let parts = bisect(&col_ptr, &row_idx).expect("a 1,500-vertex grid is split");
-        for c in 0..w * h {
-            for &r in &row_idx[col_ptr[c]..col_ptr[c + 1]] {
-                let crossing = matches!((parts[r], parts[c]), (Part::Domain(a), Part::Domain(b)) if a != b);
-                assert!(!crossing, "entry ({r}, {c}) couples the two domains");
+    fn separator_len(parts: &[Part]) -> usize {
+        parts.iter().filter(|&&p| p == Part::Separator).count()
+    }
+
+    /// Every cut of the pattern splits it into balanced domains that no entry couples; returns
+    /// the smallest separator.
+    fn smallest_valid_separator(col_ptr: &[usize], row_idx: &[usize]) -> usize {
+        let cuts = candidate_cuts(col_ptr, row_idx);
+        assert!(!cuts.is_empty(), "no cut");
+        for parts in &cuts {
+            for c in 0..col_ptr.len() - 1 {
+                for &r in &row_idx[col_ptr[c]..col_ptr[c + 1]] {
+                    let crossing = matches!((parts[r], parts[c]), (Part::Domain(a), Part::Domain(b)) if a != b);
+                    assert!(!crossing, "entry ({r}, {c}) couples the two domains");
+                }
             }
+            let count = |p| parts.iter().filter(|&&q| q == p).count();
+            let (first, second, separator) = (count(Part::Domain(0)), count(Part::Domain(1)), count(Part::Separator));
+            assert!(first.abs_diff(second) <= separator, "domains of {first} and {second} vertices");
         }
-        let count = |p| parts.iter().filter(|&&q| q == p).count();
-        let (first, second, separator) = (count(Part::Domain(0)), count(Part::Domain(1)), count(Part::Separator));
-        // A cut across the grid: at most the diagonal of the grid's extent, far below w·h / 8.
-        assert!(separator <= w + h, "separator of {separator} vertices");
-        assert!(first.abs_diff(second) <= separator, "domains of {first} and {second} vertices");
+        cuts.iter().map(|parts| separator_len(parts)).min().unwrap_or(0)
     }
 
     #[test]
-    fn long_range_couplings_swell_the_separator_beyond_the_unweighed_size() {
-        let separator = |parts: &[Part]| parts.iter().filter(|&&p| p == Part::Separator).count();
-        // A 100 × 100 grid splits with a separator of about 100 (≤ 4√n = 400).
+    fn every_cut_separates_the_domains() {
+        let (w, h) = (60, 25);
+        let (col_ptr, row_idx) = grid(w, h);
+        // The cut across the short side: one column.
+        assert_eq!(smallest_valid_separator(&col_ptr, &row_idx), h);
+    }
+
+    /// Upper CSC pattern of a w × h grid triangulated with each square's diagonal in one of two
+    /// directions, chosen by a fixed irregular rule (vertex x + w·y): the graph distances of an
+    /// irregular surface mesh, whose level sets are not straight.
+    fn irregular_triangulation(w: usize, h: usize) -> (Vec<usize>, Vec<usize>) {
+        let (mut col_ptr, mut row_idx) = (vec![0], Vec::new());
+        for c in 0..w * h {
+            let (x, y) = (c % w, c / w);
+            let rising = (x * 7 + y * 13 + (x * y) % 5) % 3 != 0;
+            if y > 0 && x > 0 && rising {
+                row_idx.push(c - w - 1);
+            }
+            if y > 0 {
+                row_idx.push(c - w);
+            }
+            if y > 0 && x + 1 < w && !rising {
+                row_idx.push(c - w + 1);
+            }
+            if x > 0 {
+                row_idx.push(c - 1);
+            }
+            row_idx.push(c);
+            col_ptr.push(row_idx.len());
+        }
+        (col_ptr, row_idx)
+    }
+
+    #[test]
+    fn a_square_is_cut_across_a_side_not_along_its_diagonal() {
+        // The pseudo-diameter of a 55 × 55 square runs corner to corner, and the cut along the
+        // difference of the distances to its ends alone took 97 vertices; a side is 55.
+        let (col_ptr, row_idx) = irregular_triangulation(55, 55);
+        let smallest = smallest_valid_separator(&col_ptr, &row_idx);
+        assert!(smallest <= 60, "separator of {smallest} vertices");
+    }
+
+    #[test]
+    fn long_range_couplings_swell_the_separator() {
+        // A 100 × 100 grid splits with a separator of one row.
         let (col_ptr, row_idx) = grid(100, 100);
-        let parts = bisect(&col_ptr, &row_idx).expect("a split");
-        assert!(!separator_needs_weighing(col_ptr.len() - 1, separator(&parts)));
-        // 100 couplings between far-apart vertices: the cut crosses them all (about 630
-        // variables, still below n/8 = 1,250), so the split is proposed but must be weighed
-        // (`substructured_cholesky` keeps one domain for it: the dense part would dominate).
+        assert_eq!(smallest_valid_separator(&col_ptr, &row_idx), 100);
+        // 100 couplings between far-apart vertices: every cut crosses many of them (several
+        // hundred variables, still below n/8 = 1,250), so splits are proposed
+        // (`substructured_cholesky` then keeps one domain: the dense part would dominate).
         let n = 100 * 100;
         let mut columns: Vec<Vec<usize>> = (0..n).map(|c| row_idx[col_ptr[c]..col_ptr[c + 1]].to_vec()).collect();
         for k in 0..100 {
@@ -207,14 +273,14 @@ mod tests {
             row_idx.extend(column);
             col_ptr.push(row_idx.len());
         }
-        let parts = bisect(&col_ptr, &row_idx).expect("a split below n/8");
-        assert!(separator_needs_weighing(n, separator(&parts)), "separator of {}", separator(&parts));
+        let smallest = smallest_valid_separator(&col_ptr, &row_idx);
+        assert!(smallest > 4 * 100, "separator of {smallest}");
     }
 
     #[test]
     fn small_or_disconnected_patterns_are_not_split() {
         let (col_ptr, row_idx) = grid(10, 10);
-        assert!(bisect(&col_ptr, &row_idx).is_none());
+        assert!(candidate_cuts(&col_ptr, &row_idx).is_empty());
         // Two 30 × 10 grids side by side, no coupling between them.
         let (mut col_ptr, mut row_idx) = grid(30, 10);
         let (second_ptr, second_rows) = grid(30, 10);
@@ -223,6 +289,6 @@ mod tests {
             row_idx.extend(second_rows[second_ptr[c]..second_ptr[c + 1]].iter().map(|r| r + offset));
             col_ptr.push(row_idx.len());
         }
-        assert!(bisect(&col_ptr, &row_idx).is_none());
+        assert!(candidate_cuts(&col_ptr, &row_idx).is_empty());
     }
 }

@@ -6,7 +6,7 @@ use super::assembly::{reduce_blocks, ConstantHessian, ReducedGather, ReducedSyst
 use super::evaluation::{evaluate_energy_into, evaluate_energy_standalone, evaluate_slots};
 use super::normal_pattern::NormalPattern;
 use super::schur::GroupSystems;
-use super::substructured_cholesky::SubstructuredCholesky;
+use super::substructured_cholesky::{SplitWork, SubstructuredCholesky};
 use super::structure::{analyse, BlockStructure, GroupStructure};
 use super::{Convergence, IterationOutcome, LeastSquaresProblem, LmOptions, SolverError};
 
@@ -54,13 +54,18 @@ pub struct LevenbergMarquardt {
 impl LevenbergMarquardt {
     /// Validates the problem (variable indices in range, no duplicates, layout consistent: each
     /// block touches ≤ 1 local group), builds the fixed sparsity pattern of the (reduced) normal
-    /// matrix, its bisection into two domains and their symbolic Cholesky analyses (AMD
-    /// ordering) once.
+    /// matrix, its bisection into two domains (where that shortens a factorisation on two cores)
+    /// and their symbolic Cholesky analyses (AMD ordering) once.
     pub fn new<P: LeastSquaresProblem>(problem: &P, options: LmOptions) -> Result<Self, SolverError> {
+        Self::with_split_work(problem, options, SplitWork::Span)
+    }
+
+    /// [`Self::new`] for a solve that splits its reduced matrix only where that lowers `work`.
+    pub(crate) fn with_split_work<P: LeastSquaresProblem>(problem: &P, options: LmOptions, work: SplitWork) -> Result<Self, SolverError> {
         let (blocks, groups) = analyse(problem)?;
         let mut pattern = NormalPattern::build(&blocks, &groups)?;
         let cholesky = if pattern.dimension() > 0 {
-            let mut cholesky = SubstructuredCholesky::analyse(&pattern.col_ptr, &pattern.row_idx)?;
+            let mut cholesky = SubstructuredCholesky::analyse(&pattern.col_ptr, &pattern.row_idx, work)?;
             // The reduced matrix is assembled directly in the factorisations' storage order.
             let storage = cholesky.storage_positions(pattern.row_idx.len());
             pattern.assign_storage(&blocks, &groups, &storage, &cholesky.domains_of_variables())?;

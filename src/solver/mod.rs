@@ -28,3 +28,4 @@ pub use levenberg_marquardt::{DampingState, LevenbergMarquardt};
 pub use options::LmOptions;
 pub use outcome::{Convergence, IterationOutcome};
 pub use problem::{new_revision, LeastSquaresProblem};
+pub(crate) use substructured_cholesky::SplitWork;

@@ -21,9 +21,22 @@ use faer::linalg::matmul::triangular::{self, BlockStructure};
 use faer::{Accum, Conj, Mat, MatMut, Par};
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use super::bisection::{bisect, separator_needs_weighing, Part};
+use super::bisection::{candidate_cuts, Part};
 use super::sparse_cholesky::SparseCholesky;
 use super::SolverError;
+
+/// What splitting the matrix into two domains, factorised at the same time with a dense
+/// separator last, must lower to be taken (counted in floating-point operations from the
+/// symbolic analyses, once, when the solver is built).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum SplitWork {
+    /// The time on two cores: the larger domain's factorisation, then the separator's dense work.
+    Span,
+    /// The work on both cores together: for a solve that shares the cores with another one
+    /// running beside it (the start search's probes), where a split that shortens each solve's
+    /// span but adds operations slows the pair down.
+    Total,
+}
 
 pub(crate) struct SubstructuredCholesky {
     dimension: usize,
@@ -56,9 +69,10 @@ struct Domain {
 impl SubstructuredCholesky {
     /// Bisection, orderings and symbolic analyses of the matrix with the upper-triangular CSC
     /// pattern `col_ptr`, `row_idx` (sorted rows, diagonal present).
-    pub fn analyse(col_ptr: &[usize], row_idx: &[usize]) -> Result<Self, SolverError> {
+    /// A split is taken where it lowers `work` ([`split_or_whole`]).
+    pub fn analyse(col_ptr: &[usize], row_idx: &[usize], work: SplitWork) -> Result<Self, SolverError> {
         let n = col_ptr.len() - 1;
-        let (mut domains, separator) = split_or_whole(col_ptr, row_idx)?;
+        let (mut domains, separator) = split_or_whole(col_ptr, row_idx, work)?;
         let mut offset = 0;
         for domain in &mut domains {
             domain.offset = offset;
@@ -190,31 +204,47 @@ fn for_each_domain(domains: &mut [Domain], f: impl Fn(&mut Domain) + Sync) {
     }
 }
 
-/// The domains and the separator: two domains when the bisection finds a separator small enough
-/// ([`bisect`]) and, where it is above the size that pays without weighing
-/// ([`separator_needs_weighing`]), the split's work on two threads is below the whole matrix's
-/// factorisation; else one domain and no separator. The split's work: the larger domain's sparse
-/// factorisation (its trailing separator block included), then R⁽ᵈ⁾R⁽ᵈ⁾ᵀ (s³/3, one per
-/// domain side by side) and the Cholesky of Ã (s³/3). The choice depends on the pattern only,
-/// not on the threads.
-fn split_or_whole(col_ptr: &[usize], row_idx: &[usize]) -> Result<(Vec<Domain>, Vec<usize>), SolverError> {
+/// The domains and the separator: of the bisection's cuts ([`candidate_cuts`]) the one whose
+/// split costs the least `work`, if that is below the whole matrix's factorisation; else one
+/// domain and no separator. A split costs each domain's sparse factorisation (its trailing
+/// separator block included), R⁽ᵈ⁾R⁽ᵈ⁾ᵀ (s³/3 per domain) and the Cholesky of Ã (s³/3), counted
+/// from the supernodal structures ([`SparseCholesky::flops`]). A cut with a smaller separator
+/// can still cost more (domains of unequal density), and a cut across a chain-like pattern (a
+/// strip's problem) can cost each domain more than the whole matrix. The choice depends on the
+/// pattern and `work` only, not on the threads.
+fn split_or_whole(col_ptr: &[usize], row_idx: &[usize], work: SplitWork) -> Result<(Vec<Domain>, Vec<usize>), SolverError> {
     let n = col_ptr.len() - 1;
-    let whole = || Domain::analyse(col_ptr, row_idx, &vec![Part::Domain(0); n], 0, &[]);
-    let Some(parts) = bisect(col_ptr, row_idx) else { return Ok((vec![whole()?], Vec::new())) };
-    let separator: Vec<usize> = (0..n).filter(|&v| parts[v] == Part::Separator).collect();
-    // The two domains' orderings and symbolic analyses are independent: run them at once.
-    let analyse = |d: u8| Domain::analyse(col_ptr, row_idx, &parts, d, &separator);
-    let (first, second) = rayon::join(|| analyse(0), || analyse(1));
-    let domains = vec![first?, second?];
-    if separator_needs_weighing(n, separator.len()) {
-        let whole = whole()?;
-        let dense = 2.0 * (separator.len() as f64).powi(3) / 3.0;
-        let split = domains.iter().map(|d| d.cholesky.flops()).fold(0.0, f64::max) + dense;
-        if split >= whole.cholesky.flops() {
-            return Ok((vec![whole], Vec::new()));
+    let whole: Vec<Part> = vec![Part::Domain(0); n];
+    // The analyses are only counted here and dropped, so that no more than two are held at a
+    // time (a design's peak memory); the winner's are made again at the end.
+    let mut least = Domain::analyse(col_ptr, row_idx, &whole, 0, &[])?.flops();
+    let mut best = None;
+    for parts in candidate_cuts(col_ptr, row_idx) {
+        let separator: Vec<usize> = (0..n).filter(|&v| parts[v] == Part::Separator).collect();
+        let [first, second] = analyse_split(col_ptr, row_idx, &parts, &separator)?.map(|domain| domain.flops());
+        let dense = (separator.len() as f64).powi(3) / 3.0;
+        let cost = match work {
+            SplitWork::Span => first.max(second) + 2.0 * dense,
+            SplitWork::Total => first + second + 3.0 * dense,
+        };
+        if cost < least {
+            (least, best) = (cost, Some((parts, separator)));
         }
     }
-    Ok((domains, separator))
+    Ok(match best {
+        None => (vec![Domain::new(Domain::analyse(col_ptr, row_idx, &whole, 0, &[])?, 0)], Vec::new()),
+        Some((parts, separator)) => {
+            let s = separator.len();
+            (analyse_split(col_ptr, row_idx, &parts, &separator)?.map(|domain| Domain::new(domain, s)).into(), separator)
+        }
+    })
+}
+
+/// The orderings and symbolic analyses of the two domains of the split `parts`, made at once.
+fn analyse_split(col_ptr: &[usize], row_idx: &[usize], parts: &[Part], separator: &[usize]) -> Result<[SparseCholesky; 2], SolverError> {
+    let analyse = |d: u8| Domain::analyse(col_ptr, row_idx, parts, d, separator);
+    let (first, second) = rayon::join(|| analyse(0), || analyse(1));
+    Ok([first?, second?])
 }
 
 /// An s × s dense matrix stored with its row count rounded up to a multiple of 8, the zero rows
@@ -228,24 +258,28 @@ fn padded_square(s: usize) -> Mat<f64> {
 
 impl Domain {
     /// Ordering and symbolic analysis of domain `d` of the split `parts` (its interior, then the
-    /// separator); its storage offset is set by the caller.
-    fn analyse(col_ptr: &[usize], row_idx: &[usize], parts: &[Part], d: u8, separator: &[usize]) -> Result<Self, SolverError> {
+    /// separator).
+    fn analyse(col_ptr: &[usize], row_idx: &[usize], parts: &[Part], d: u8, separator: &[usize]) -> Result<SparseCholesky, SolverError> {
         let n = col_ptr.len() - 1;
         let interior: Vec<usize> = (0..n).filter(|&v| parts[v] == Part::Domain(d)).collect();
         let mut local = vec![usize::MAX; n];
         for (i, &v) in interior.iter().chain(separator).enumerate() {
             local[v] = i;
         }
-        let cholesky = SparseCholesky::analyse(col_ptr, row_idx, &interior, separator, &local)?;
-        let s = separator.len();
-        Ok(Domain {
+        SparseCholesky::analyse(col_ptr, row_idx, &interior, separator, &local)
+    }
+
+    /// The domain of an analysis whose trailing `s` variables are the separator, with its
+    /// workspaces; its storage offset is set by the caller.
+    fn new(cholesky: SparseCholesky, s: usize) -> Self {
+        Domain {
+            work: vec![0.0; cholesky.variables().len()],
             cholesky,
             offset: 0,
-            work: vec![0.0; interior.len() + s],
             separator_factor: padded_square(s),
             separator_product: padded_square(s),
             separator_reduction: vec![0.0; s],
-        })
+        }
     }
 
     /// Numeric factorisation of the domain matrix, then R⁽ᵈ⁾ and R⁽ᵈ⁾R⁽ᵈ⁾ᵀ.
@@ -410,8 +444,12 @@ mod tests {
     }
 
     fn solve(problem: &QuadProblem) -> (SubstructuredCholesky, Vec<f64>, Vec<f64>) {
+        solve_with_work(problem, SplitWork::Span)
+    }
+
+    fn solve_with_work(problem: &QuadProblem, work: SplitWork) -> (SubstructuredCholesky, Vec<f64>, Vec<f64>) {
         let (col_ptr, row_idx) = problem.pattern();
-        let mut cholesky = SubstructuredCholesky::analyse(&col_ptr, &row_idx).unwrap();
+        let mut cholesky = SubstructuredCholesky::analyse(&col_ptr, &row_idx, work).unwrap();
         let layout = layout(&mut cholesky, row_idx.len());
         assert!(cholesky.factorize_with(|values| problem.fill(&layout, &col_ptr, &row_idx, values)));
         let b: Vec<f64> = (0..problem.n).map(|i| ((i * 37 % 23) as f64 - 11.0) / 7.0).collect();
@@ -446,13 +484,16 @@ mod tests {
 
     #[test]
     fn a_separator_swollen_by_long_range_couplings_keeps_one_domain() {
-        // The bisection proposes a separator of several hundred variables (above 4√n, so it is
-        // weighed): its dense Schur complement would cost more than factorising the whole.
+        // The bisection proposes a separator of several hundred variables: its dense Schur
+        // complement would cost more than factorising the whole.
         let problem = QuadProblem::new(100, 100, 1e-3).with_long_range_couplings(100);
         let (col_ptr, row_idx) = problem.pattern();
-        let parts = bisect(&col_ptr, &row_idx).expect("a split is proposed");
-        let proposed = parts.iter().filter(|&&p| p == Part::Separator).count();
-        assert!(separator_needs_weighing(problem.n, proposed), "separator of {proposed}");
+        let cuts = candidate_cuts(&col_ptr, &row_idx);
+        assert!(!cuts.is_empty(), "splits are proposed");
+        for parts in &cuts {
+            let proposed = parts.iter().filter(|&&p| p == Part::Separator).count();
+            assert!(proposed > 400, "separator of {proposed}");
+        }
         let (cholesky, x, b) = solve(&problem);
         assert_eq!(cholesky.domains.len(), 1);
         assert!(cholesky.separator.is_empty());
@@ -462,10 +503,25 @@ mod tests {
     }
 
     #[test]
+    fn a_split_that_adds_work_is_taken_for_its_span_only() {
+        // A 40 × 25 grid: the larger domain plus the separator cost less than the whole matrix
+        // (so a solve with two cores to itself splits), both domains together more (so one that
+        // shares the cores with another does not). Both solve A x = b.
+        let problem = QuadProblem::new(40, 25, 1e-3);
+        for (work, domains) in [(SplitWork::Span, 2), (SplitWork::Total, 1)] {
+            let (cholesky, x, b) = solve_with_work(&problem, work);
+            assert_eq!(cholesky.domains.len(), domains, "{work:?}");
+            let ax = problem.multiply(&x);
+            let worst = ax.iter().zip(&b).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+            assert!(worst < 1e-9, "{work:?}: max |Ax − b| = {worst:e}");
+        }
+    }
+
+    #[test]
     fn indefinite_matrix_is_reported() {
         let problem = QuadProblem::new(40, 25, -0.5);
         let (col_ptr, row_idx) = problem.pattern();
-        let mut cholesky = SubstructuredCholesky::analyse(&col_ptr, &row_idx).unwrap();
+        let mut cholesky = SubstructuredCholesky::analyse(&col_ptr, &row_idx, SplitWork::Span).unwrap();
         let layout = layout(&mut cholesky, row_idx.len());
         assert!(!cholesky.factorize_with(|values| problem.fill(&layout, &col_ptr, &row_idx, values)));
     }
