@@ -214,11 +214,16 @@ fn for_each_domain(domains: &mut [Domain], f: impl Fn(&mut Domain) + Sync) {
 /// pattern and `work` only, not on the threads.
 fn split_or_whole(col_ptr: &[usize], row_idx: &[usize], work: SplitWork) -> Result<(Vec<Domain>, Vec<usize>), SolverError> {
     let n = col_ptr.len() - 1;
-    let whole: Vec<Part> = vec![Part::Domain(0); n];
-    // The analyses are only counted here and dropped, so that no more than two are held at a
-    // time (a design's peak memory); the winner's are made again at the end.
-    let mut least = Domain::analyse(col_ptr, row_idx, &whole, 0, &[])?.flops();
-    let mut best = None;
+    // The whole matrix's analysis is kept until a cut beats it; the cuts' analyses are only
+    // counted and dropped, so that no more than three are held at a time (a design's peak
+    // memory), and the winner's are made again at the end.
+    enum Choice {
+        Whole(SparseCholesky),
+        Cut(Vec<Part>, Vec<usize>),
+    }
+    let whole = Domain::analyse(col_ptr, row_idx, &vec![Part::Domain(0); n], 0, &[])?;
+    let mut least = whole.flops();
+    let mut choice = Choice::Whole(whole);
     for parts in candidate_cuts(col_ptr, row_idx) {
         let separator: Vec<usize> = (0..n).filter(|&v| parts[v] == Part::Separator).collect();
         let [first, second] = analyse_split(col_ptr, row_idx, &parts, &separator)?.map(|domain| domain.flops());
@@ -228,12 +233,12 @@ fn split_or_whole(col_ptr: &[usize], row_idx: &[usize], work: SplitWork) -> Resu
             SplitWork::Total => first + second + 3.0 * dense,
         };
         if cost < least {
-            (least, best) = (cost, Some((parts, separator)));
+            (least, choice) = (cost, Choice::Cut(parts, separator));
         }
     }
-    Ok(match best {
-        None => (vec![Domain::new(Domain::analyse(col_ptr, row_idx, &whole, 0, &[])?, 0)], Vec::new()),
-        Some((parts, separator)) => {
+    Ok(match choice {
+        Choice::Whole(whole) => (vec![Domain::new(whole, 0)], Vec::new()),
+        Choice::Cut(parts, separator) => {
             let s = separator.len();
             (analyse_split(col_ptr, row_idx, &parts, &separator)?.map(|domain| Domain::new(domain, s)).into(), separator)
         }
@@ -447,6 +452,11 @@ mod tests {
         solve_with_work(problem, SplitWork::Span)
     }
 
+    /// max |A x − b|.
+    fn worst_residual(problem: &QuadProblem, x: &[f64], b: &[f64]) -> f64 {
+        problem.multiply(x).iter().zip(b).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max)
+    }
+
     fn solve_with_work(problem: &QuadProblem, work: SplitWork) -> (SubstructuredCholesky, Vec<f64>, Vec<f64>) {
         let (col_ptr, row_idx) = problem.pattern();
         let mut cholesky = SubstructuredCholesky::analyse(&col_ptr, &row_idx, work).unwrap();
@@ -466,8 +476,7 @@ mod tests {
         assert_eq!(cholesky.domains.len(), 2, "the grid is split");
         let separator = cholesky.separator.len();
         assert!((25..=60).contains(&separator), "separator of {separator} variables");
-        let ax = problem.multiply(&x);
-        let worst = ax.iter().zip(&b).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        let worst = worst_residual(&problem, &x, &b);
         assert!(worst < 1e-9, "max |Ax − b| = {worst:e}");
     }
 
@@ -477,8 +486,7 @@ mod tests {
         let (cholesky, x, b) = solve(&problem);
         assert_eq!(cholesky.domains.len(), 1);
         assert!(cholesky.separator.is_empty());
-        let ax = problem.multiply(&x);
-        let worst = ax.iter().zip(&b).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        let worst = worst_residual(&problem, &x, &b);
         assert!(worst < 1e-9, "max |Ax − b| = {worst:e}");
     }
 
@@ -497,8 +505,7 @@ mod tests {
         let (cholesky, x, b) = solve(&problem);
         assert_eq!(cholesky.domains.len(), 1);
         assert!(cholesky.separator.is_empty());
-        let ax = problem.multiply(&x);
-        let worst = ax.iter().zip(&b).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        let worst = worst_residual(&problem, &x, &b);
         assert!(worst < 1e-9, "max |Ax − b| = {worst:e}");
     }
 
@@ -511,8 +518,7 @@ mod tests {
         for (work, domains) in [(SplitWork::Span, 2), (SplitWork::Total, 1)] {
             let (cholesky, x, b) = solve_with_work(&problem, work);
             assert_eq!(cholesky.domains.len(), domains, "{work:?}");
-            let ax = problem.multiply(&x);
-            let worst = ax.iter().zip(&b).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+            let worst = worst_residual(&problem, &x, &b);
             assert!(worst < 1e-9, "{work:?}: max |Ax − b| = {worst:e}");
         }
     }
