@@ -5,7 +5,7 @@
 use super::assembly::{reduce_blocks, ConstantHessian, ReducedGather, ReducedSystem};
 use super::evaluation::{evaluate_energy_into, evaluate_energy_standalone, evaluate_slots};
 use super::normal_pattern::NormalPattern;
-use super::schur::GroupSystems;
+use super::schur::{GroupSystems, KEPT_ACCUMULATION_LIMIT};
 use super::substructured_cholesky::{SplitWork, SubstructuredCholesky};
 use super::structure::{analyse, BlockStructure, GroupStructure};
 use super::{Convergence, IterationOutcome, LeastSquaresProblem, LmOptions, SolverError};
@@ -62,6 +62,12 @@ impl LevenbergMarquardt {
 
     /// [`Self::new`] for a solve that splits its reduced matrix only where that lowers `work`.
     pub(crate) fn with_split_work<P: LeastSquaresProblem>(problem: &P, options: LmOptions, work: SplitWork) -> Result<Self, SolverError> {
+        Self::build(problem, options, work, KEPT_ACCUMULATION_LIMIT)
+    }
+
+    /// [`Self::with_split_work`], keeping the groups' accumulated systems for retried trials if
+    /// they hold at most `kept_limit` values (see [`GroupSystems`]).
+    fn build<P: LeastSquaresProblem>(problem: &P, options: LmOptions, work: SplitWork, kept_limit: usize) -> Result<Self, SolverError> {
         let (blocks, groups) = analyse(problem)?;
         let mut pattern = NormalPattern::build(&blocks, &groups)?;
         let cholesky = if pattern.dimension() > 0 {
@@ -73,7 +79,7 @@ impl LevenbergMarquardt {
         } else {
             None
         };
-        let systems = GroupSystems::new(&blocks, &groups);
+        let systems = GroupSystems::new(&blocks, &groups, kept_limit);
         let constant_hessian = ConstantHessian::new(&pattern);
         let gather = ReducedGather::new(&mut pattern, &groups, &systems)?;
         pattern.free_rows();
@@ -146,7 +152,9 @@ impl LevenbergMarquardt {
     /// accepts h when the gain ratio ρ = (E(x) − E(x+h)) / (L(0) − L(h)) is positive, with
     /// L(0) − L(h) = hᵀ(μh − Jᵀr) for E = ‖r‖². Accepted: μ ← μ·max(1/3, 1 − (2ρ − 1)³), ν ← 2;
     /// rejected (including failed factorisations and non-finite trial energies): μ ← μν, ν ← 2ν,
-    /// and the damped system is re-solved without re-evaluating Jacobians, up to `max_trials`.
+    /// and the damped system is re-solved, up to `max_trials`, without evaluating Jacobians again
+    /// (except those of the local groups in a solve too large to keep their accumulated systems,
+    /// see [`GroupSystems`]).
     /// Never accepts a step that raises E.
     ///
     /// Runs on a thread of the rayon pool (the calling thread if it is one), so that its short
@@ -360,5 +368,115 @@ fn lowest_block_error(slots: Result<(), SolverError>, groups: Result<bool, Solve
         (Ok(()), groups) => groups,
         (Err(error), Ok(_)) => Err(error),
         (Err(a), Err(b)) => Err(if block(&b) < block(&a) { b } else { a }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solver::VariableLayout;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+
+    /// Points p_i ∈ R² (a local group each) pulled onto circles of radius a_i (globals, tied
+    /// along a chain): group blocks [‖p_i‖² − a_i², p_i − c_i] over (p_i, a_i); global blocks
+    /// a_{i+1} − a_i − 0.05 and a_0 − 1.
+    struct PointsOnCircles {
+        n: usize,
+        variables: Vec<Vec<u32>>,
+        group_jacobians: AtomicUsize,
+    }
+
+    impl PointsOnCircles {
+        fn new(n: usize) -> Self {
+            let g = n as u32;
+            let mut variables: Vec<Vec<u32>> = (0..g).map(|i| vec![g + 2 * i, g + 2 * i + 1, i]).collect();
+            variables.extend((1..g).map(|i| vec![i, i - 1]));
+            variables.push(vec![0]);
+            Self { n, variables, group_jacobians: AtomicUsize::new(0) }
+        }
+
+        fn target(i: usize) -> [f64; 2] {
+            let t = i as f64;
+            [3.0 * (0.4 * t).cos(), 2.0 * (0.9 * t).sin()]
+        }
+    }
+
+    impl LeastSquaresProblem for PointsOnCircles {
+        fn variable_count(&self) -> usize {
+            3 * self.n
+        }
+        fn block_count(&self) -> usize {
+            self.variables.len()
+        }
+        fn block_variables(&self, b: usize) -> &[u32] {
+            &self.variables[b]
+        }
+        fn block_residual_count(&self, b: usize) -> usize {
+            if b < self.n {
+                3
+            } else {
+                1
+            }
+        }
+        fn evaluate_block(&self, b: usize, x: &[f64], r: &mut [f64], jacobian: Option<&mut [f64]>) {
+            let v: Vec<f64> = self.variables[b].iter().map(|&i| x[i as usize]).collect();
+            if b < self.n {
+                let [cx, cy] = Self::target(b);
+                let (px, py, a) = (v[0], v[1], v[2]);
+                r.copy_from_slice(&[px * px + py * py - a * a, px - cx, py - cy]);
+                if let Some(j) = jacobian {
+                    self.group_jacobians.fetch_add(1, Ordering::Relaxed);
+                    j.copy_from_slice(&[2.0 * px, 2.0 * py, -2.0 * a, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]);
+                }
+            } else if b < 2 * self.n - 1 {
+                r[0] = v[0] - v[1] - 0.05;
+                if let Some(j) = jacobian {
+                    j.copy_from_slice(&[1.0, -1.0]);
+                }
+            } else {
+                r[0] = v[0] - 1.0;
+                if let Some(j) = jacobian {
+                    j[0] = 1.0;
+                }
+            }
+        }
+        fn variable_layout(&self) -> VariableLayout {
+            VariableLayout::with_local_groups(self.n, &vec![2; self.n]).unwrap()
+        }
+    }
+
+    /// Solves from x = 0.5 with almost no initial damping (so that early steps overshoot and are
+    /// retried); the bits of x, E and μ after each iteration, the trials, and the group Jacobians
+    /// evaluated per iteration.
+    fn run(kept_limit: usize) -> (bool, Vec<u64>, Vec<usize>, Vec<usize>) {
+        let problem = PointsOnCircles::new(40);
+        let options = LmOptions { tau: 1e-12, ..LmOptions::default() };
+        let mut solver = LevenbergMarquardt::build(&problem, options, SplitWork::Span, kept_limit).unwrap();
+        let mut x = vec![0.5; problem.variable_count()];
+        let (mut bits, mut trials, mut evaluations) = (Vec::new(), Vec::new(), Vec::new());
+        for _ in 0..8 {
+            let before = problem.group_jacobians.load(Ordering::Relaxed);
+            let outcome = solver.iterate(&problem, &mut x).unwrap();
+            evaluations.push(problem.group_jacobians.load(Ordering::Relaxed) - before);
+            trials.push(outcome.trials);
+            bits.extend([outcome.energy_after.to_bits(), outcome.damping.to_bits()]);
+            bits.extend(x.iter().map(|v| v.to_bits()));
+        }
+        (solver.systems.keeps_accumulation(), bits, trials, evaluations)
+    }
+
+    #[test]
+    fn kept_accumulations_spare_the_evaluation_of_a_retry_and_change_no_bit() {
+        let (kept, kept_bits, kept_trials, kept_evaluations) = run(usize::MAX);
+        let (evaluated, bits, trials, evaluations) = run(0);
+        assert!(kept && !evaluated);
+        assert!(kept_bits == bits, "keeping the accumulations changed the result");
+        assert_eq!(kept_trials, trials);
+        assert!(trials.iter().any(|&t| t > 1), "no trial was retried: {trials:?}");
+        // One evaluation of the 40 group blocks per iteration when kept, one per trial when not.
+        assert!(kept_evaluations.iter().all(|&e| e == 40), "{kept_evaluations:?}");
+        for (e, t) in evaluations.iter().zip(&trials) {
+            assert_eq!(*e, 40 * t, "{evaluations:?} for trials {trials:?}");
+        }
     }
 }

@@ -17,9 +17,14 @@
 //!
 //! The group's blocks are evaluated right where they are accumulated: each block's Jacobian
 //! lives only in a per-thread scratch while its rows are summed into the group system, and only
-//! its residuals and Jᵀr are kept (in the group's segment, for the energy and the gradient). A
-//! trial with another μ (after a rejected step) evaluates and accumulates the group again at the
-//! same x.
+//! its residuals and Jᵀr are kept (in the group's segment, for the energy and the gradient).
+//!
+//! A trial with another μ (after a rejected step) eliminates the systems accumulated at the same
+//! x again. Where all of them together are small (up to [`KEPT_ACCUMULATION_LIMIT`] values, a
+//! field on some 35k vertices), each segment keeps a copy of its accumulated system, taken right
+//! after the accumulation while it is in cache, and a retry copies it back: far cheaper than an
+//! evaluation. Larger solves evaluate and accumulate the groups again instead: their peak memory
+//! is what binds at scale, and there the sparse factorisation outweighs the evaluation in a trial.
 //!
 //! The global Gram G_L = J_GᵀJ_G of the group's blocks is summed here too (from the same
 //! Jacobian rows) rather than scattered into H_GG block by block: the group hands S the single
@@ -32,13 +37,18 @@ use super::segments::try_for_each_segment;
 use super::structure::{triangle_len, BlockStructure, GroupStructure};
 use super::{LeastSquaresProblem, SolverError};
 
+/// Most values the kept copies of the accumulated systems of all groups may hold (64 MiB):
+/// enough for every probe of the start search and for a field on some 35k vertices.
+pub(crate) const KEPT_ACCUMULATION_LIMIT: usize = 1 << 23;
+
 /// Dense workspaces of all local groups (group l: k local variables, q coupled global
 /// variables), sized once, one segment per group in one buffer.
 ///
 /// A segment holds, in this order: D_L, after elimination its Cholesky factor L (lower triangle
 /// of k×k packed row by row); [C_L | g_L], after elimination [Z | z] (k×(q+1)); G_L, after
 /// elimination W − G_L (upper triangle of q×q packed row by row, the order of the pattern's Schur
-/// targets); v (q); and the residuals and Jᵀr of each of the group's blocks, in block order (m + n each).
+/// targets); v (q); the residuals and Jᵀr of each of the group's blocks, in block order (m + n
+/// each); and, where they are kept, a copy of the accumulated D_L, [C_L | g_L] and G_L.
 /// All row-major. (A block's Jacobian and the dense row being accumulated live in a per-thread
 /// scratch, not in the segment.)
 pub(crate) struct GroupSystems {
@@ -47,6 +57,8 @@ pub(crate) struct GroupSystems {
     buffer: Vec<f64>,
     /// Whether the segments hold accumulated, not yet eliminated systems.
     accumulated: bool,
+    /// Whether each segment keeps a copy of its accumulated system.
+    keeps_accumulation: bool,
     /// Position in `buffer` of each block's residuals, followed by its Jᵀr (blocks of a local
     /// group only; 0 for the others).
     product_start: Vec<usize>,
@@ -77,7 +89,20 @@ const COUPLING: usize = 1;
 const GRAM: usize = 2;
 const SCHUR_RHS: usize = 3;
 
-/// The sections of a segment, and the rest of it: its blocks' residuals and Jᵀr.
+/// Length of the accumulated system of a group (D_L, [C_L | g_L], G_L), the start of its segment.
+fn system_len(k: usize, q: usize) -> usize {
+    section_offset(k, q, SCHUR_RHS)
+}
+
+/// A segment without its kept copy (if `keeps`), and that copy.
+fn split_kept(k: usize, q: usize, segment: &mut [f64], keeps: bool) -> (&mut [f64], &mut [f64]) {
+    let kept = if keeps { system_len(k, q) } else { 0 };
+    let at = segment.len() - kept;
+    segment.split_at_mut(at)
+}
+
+/// The sections of a segment (without its kept copy), and the rest of it: its blocks' residuals
+/// and Jᵀr.
 fn sections(k: usize, q: usize, segment: &mut [f64]) -> (Sections<'_>, &mut [f64]) {
     let [normal, coupling, gram, schur_rhs] = section_lengths(k, q);
     let (normal_part, rest) = segment.split_at_mut(normal);
@@ -99,7 +124,11 @@ fn dimensions(groups: &GroupStructure, l: usize) -> (usize, usize) {
 }
 
 impl GroupSystems {
-    pub fn new(blocks: &BlockStructure, groups: &GroupStructure) -> Self {
+    /// The workspaces, keeping copies of the accumulated systems if these hold at most
+    /// `kept_limit` values in all ([`KEPT_ACCUMULATION_LIMIT`] for a solver).
+    pub fn new(blocks: &BlockStructure, groups: &GroupStructure, kept_limit: usize) -> Self {
+        let systems: usize = (0..groups.group_count()).map(|l| system_len(groups.size(l), groups.globals(l).len())).sum();
+        let keeps_accumulation = systems <= kept_limit;
         let mut segment_ptr = Vec::with_capacity(groups.group_count() + 1);
         segment_ptr.push(0);
         let mut product_start = vec![0; blocks.block_count()];
@@ -111,10 +140,19 @@ impl GroupSystems {
                 product_start[b] = end;
                 end += blocks.residual_count(b) + blocks.variables(b).len();
             }
+            if keeps_accumulation {
+                end += system_len(k, q);
+            }
             segment_ptr.push(end);
         }
         let len = segment_ptr[groups.group_count()];
-        Self { segment_ptr, buffer: vec![0.0; len], accumulated: false, product_start }
+        Self { segment_ptr, buffer: vec![0.0; len], accumulated: false, keeps_accumulation, product_start }
+    }
+
+    /// Whether a retried trial copies back kept accumulations (rather than evaluating again).
+    #[cfg(test)]
+    pub fn keeps_accumulation(&self) -> bool {
+        self.keeps_accumulation
     }
 
     /// The residuals and Jᵀr of block `b` of a local group at the x of the last accumulation.
@@ -174,14 +212,21 @@ impl GroupSystems {
         mu: Option<f64>,
     ) -> Result<bool, SolverError> {
         self.accumulated = mu.is_none();
+        let keeps = self.keeps_accumulation;
         // 2b for block b's residuals, 2b + 1 for its Jacobian: the lowest over all groups.
         let non_finite = AtomicUsize::new(usize::MAX);
         let failed = try_for_each_segment(&mut self.buffer, &self.segment_ptr, &|l, segment| {
             let (k, q) = dimensions(groups, l);
+            let (segment, kept) = split_kept(k, q, segment, keeps);
             let (mut s, products) = sections(k, q, segment);
             let evaluated = with_jacobian_scratch(|jacobian| accumulate_kernel(problem, x, k, q, &mut s, products, blocks, groups.blocks(l), jacobian));
             match evaluated {
-                Ok(()) => mu.is_none_or(|mu| eliminate_kernel(k, q, &mut s, mu)),
+                Ok(()) => {
+                    if keeps {
+                        kept.copy_from_slice(&segment[..kept.len()]);
+                    }
+                    mu.is_none_or(|mu| eliminate_kernel(k, q, &mut sections(k, q, segment).0, mu))
+                }
                 Err(code) => {
                     non_finite.fetch_min(code, Ordering::Relaxed);
                     false
@@ -196,10 +241,10 @@ impl GroupSystems {
     }
 
     /// Factors every D_L + μI = LLᵀ, solves [Z | z] = L⁻¹[C_L | g_L] and forms W = ZᵀZ,
-    /// v = Zᵀz (in parallel), evaluating and accumulating the systems at `x` again first unless
-    /// they are fresh from [`Self::accumulate`] without μ. Returns `false` if a dense
-    /// factorisation fails (not numerically positive definite) or the evaluation does (it
-    /// succeeded at the same x before).
+    /// v = Zᵀz (in parallel). Unless the systems are fresh from [`Self::accumulate`] without μ,
+    /// copies the kept accumulations back first, or where none are kept, evaluates and
+    /// accumulates the systems at `x` again. Returns `false` if a dense factorisation fails (not
+    /// numerically positive definite) or the evaluation does (it succeeded at the same x before).
     pub fn eliminate<P: LeastSquaresProblem>(
         &mut self,
         problem: &P,
@@ -208,12 +253,17 @@ impl GroupSystems {
         groups: &GroupStructure,
         mu: f64,
     ) -> bool {
-        if !self.accumulated {
+        let (keeps, restore) = (self.keeps_accumulation, !self.accumulated);
+        if restore && !keeps {
             return self.accumulate(problem, x, blocks, groups, Some(mu)).unwrap_or(false);
         }
         self.accumulated = false;
         let failed = try_for_each_segment(&mut self.buffer, &self.segment_ptr, &|l, segment| {
             let (k, q) = dimensions(groups, l);
+            let (segment, kept) = split_kept(k, q, segment, keeps);
+            if restore {
+                segment[..kept.len()].copy_from_slice(kept);
+            }
             let (mut s, _) = sections(k, q, segment);
             eliminate_kernel(k, q, &mut s, mu)
         });
