@@ -419,22 +419,22 @@ mod tests {
             }
         }
         fn evaluate_block(&self, b: usize, x: &[f64], r: &mut [f64], jacobian: Option<&mut [f64]>) {
-            let v: Vec<f64> = self.variables[b].iter().map(|&i| x[i as usize]).collect();
+            let v = |k: usize| x[self.variables[b][k] as usize];
             if b < self.n {
                 let [cx, cy] = Self::target(b);
-                let (px, py, a) = (v[0], v[1], v[2]);
+                let (px, py, a) = (v(0), v(1), v(2));
                 r.copy_from_slice(&[px * px + py * py - a * a, px - cx, py - cy]);
                 if let Some(j) = jacobian {
                     self.group_jacobians.fetch_add(1, Ordering::Relaxed);
                     j.copy_from_slice(&[2.0 * px, 2.0 * py, -2.0 * a, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]);
                 }
             } else if b < 2 * self.n - 1 {
-                r[0] = v[0] - v[1] - 0.05;
+                r[0] = v(0) - v(1) - 0.05;
                 if let Some(j) = jacobian {
                     j.copy_from_slice(&[1.0, -1.0]);
                 }
             } else {
-                r[0] = v[0] - 1.0;
+                r[0] = v(0) - 1.0;
                 if let Some(j) = jacobian {
                     j[0] = 1.0;
                 }
