@@ -101,8 +101,8 @@ namespace Lamella
         public bool IsFieldTaken => taken;
 
         /// <summary>
-        /// Probes the next candidate (a short solve, about 20 field iterations; a call that solves also runs the next
-        /// candidate's beside it, on the second core, and the next call only records it). Returns true while candidates remain,
+        /// Probes the next candidate (a short solve, about 20 field iterations; a call that solves also runs the short solve
+        /// of the next candidate that needs one beside it, on the second core, and that candidate's call only records it). Returns true while candidates remain,
         /// false when the search is complete (further calls probe nothing). Throws <see cref="InvalidOperationException"/>
         /// after <see cref="TakeField"/>.
         /// </summary>

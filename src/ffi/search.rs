@@ -127,10 +127,11 @@ pub unsafe extern "C" fn lml_search_free(search: *mut LmlSearch) {
 }
 
 /// Probes the next candidate: a short solve (20 iterations) from its start, then its level
-/// curves measured against the smooth surface. A call that solves also runs the following
-/// candidate's short solve beside it (the two on the machine's cores), which the next call then
-/// only records: calls take about 20 field iterations' time and almost none in turn. The
-/// candidates do not depend on this pairing.
+/// curves measured against the smooth surface. A call that solves also runs the short solve of
+/// the next candidate that needs one beside it (the two on the machine's cores; candidates
+/// rejected without a solve, such as traced guides that cross, are passed over), which that
+/// candidate's call then only records: calls take about 20 field iterations' time or almost
+/// none. The candidates and the winner are the same whichever core runs which probe.
 ///
 /// Returns `LML_STATUS_MORE` (candidates remain: step again), `LML_STATUS_OK` (the search is
 /// complete), `LML_STATUS_INVALID_ARGUMENT` (NULL handle, or the field was already taken).

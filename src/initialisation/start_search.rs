@@ -151,11 +151,13 @@ impl StartKind {
     }
 }
 
-/// The search, stepped one candidate at a time. A step that runs a short solve runs the next
-/// candidate's beside it, on a second solver (two probes side by side use the machine's two
-/// cores better than one probe's passes split between them), and the next step only records
-/// that candidate. Each probe is the same whichever solver runs it, so candidates, scores and
-/// the winner do not depend on it.
+/// The search, stepped one candidate at a time. A step that runs a short solve runs the short
+/// solve of the next pending candidate that needs one beside it, on a second solver (two probes
+/// side by side use the machine's two cores better than one probe's passes split between them;
+/// candidates rejected without a solve, such as traced guides that cross, are passed over so
+/// that no probe runs alone while others wait), and that candidate's step only records it. Each
+/// probe is the same whichever solver runs it, so candidates, scores and the winner do not
+/// depend on it.
 pub struct StartSearch {
     mesh: TriMesh,
     /// The coarsening of `mesh` the candidates are probed on, when `mesh` is large.
@@ -163,7 +165,7 @@ pub struct StartSearch {
     params: FieldParams,
     options: SearchOptions,
     /// Two solvers restarted for every candidate, so the problem is prepared twice at most: the
-    /// current candidate's probe runs on the first, the next candidate's beside it on the second.
+    /// current candidate's probe runs on the first, the next one's beside it on the second.
     solvers: [Option<FieldSolver>; 2],
     pending: VecDeque<Pending>,
     candidates: Vec<Candidate>,
@@ -179,8 +181,8 @@ pub struct StartSearch {
 }
 
 /// A candidate not recorded yet: its kind, initial field (or why it has none, a straight start
-/// included: [`StartSearch::screened`]) and `E_grad` target, and its probe when it ran beside the
-/// previous candidate's.
+/// included: [`StartSearch::screened`]) and `E_grad` target, and its probe when it ran beside an
+/// earlier candidate's.
 struct Pending {
     kind: StartKind,
     field: Result<Vec<f64>, String>,
@@ -412,18 +414,18 @@ impl StartSearch {
         self.pending.extend(queued);
     }
 
-    /// The probe of the current candidate from `field`, with the next pending candidate's (if it
-    /// needs one) run beside it on the second solver and kept for the next step. Both may be
-    /// abandoned as stalled against the best score accepted before this step ([`probe`]), so a
-    /// candidate's outcome does not depend on which of the two it was.
+    /// The probe of the current candidate from `field`, with the probe of the first pending
+    /// candidate that needs one run beside it on the second solver and kept for that candidate's
+    /// step. Both may be abandoned as stalled against the best score accepted before this step
+    /// ([`probe`]), so a candidate's outcome does not depend on which of the two it was.
     fn probe_beside_next(&mut self, field: &[f64], gradient_target: Option<f64>) -> Probed {
-        let mut next = self.pending.pop_front();
         let mesh = self.proxy.as_ref().unwrap_or(&self.mesh);
         let (params, options) = (&self.params, &self.options);
         let stall_above = self.best.as_ref().map(|(_, score, _)| options.stall_factor * score).filter(|limit| limit.is_finite());
         let current = ProbeStart { field, gradient_target, stall_above };
         let [first, second] = &mut self.solvers;
-        let current = match next.as_mut() {
+        let next = self.pending.iter_mut().find(|pending| pending.field.is_ok() && pending.probed.is_none());
+        match next {
             Some(Pending { field: Ok(next_field), gradient_target: next_target, probed, .. }) => {
                 let beside = ProbeStart { field: next_field, gradient_target: *next_target, stall_above };
                 let (current, beside) = rayon::join(|| probe(first, mesh, params, options, current), || probe(second, mesh, params, options, beside));
@@ -431,11 +433,7 @@ impl StartSearch {
                 current
             }
             _ => probe(first, mesh, params, options, current),
-        };
-        if let Some(next) = next {
-            self.pending.push_front(next);
         }
-        current
     }
 
     /// `field`, or why its start is rejected unsolved ([`Self::reject_straight_start`]).
