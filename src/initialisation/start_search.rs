@@ -699,3 +699,37 @@ fn guide_field(basis: &Result<GuideFieldBasis<'_>, String>, mesh: &TriMesh, coun
     let guided = basis.field(&points, &GuideCurveOptions::default()).map_err(|e| format!("no field from the guides: {e}"))?;
     Ok((guided.field, guided.gradient_target))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::surfaces::hall_roof;
+
+    /// A candidate rejected without a solve between two that need one: the first step's probe
+    /// runs the third candidate's beside its own (rather than alone), and that probe scores what
+    /// a probe of the same start on a solver of its own scores.
+    #[test]
+    fn a_probe_runs_beside_the_next_candidate_that_needs_a_solve() {
+        let mesh = hall_roof(600).into_mesh().expect("a valid roof");
+        let params = FieldParams::pseudo_geodesic(60.0);
+        let options = SearchOptions::default();
+        let mut search = StartSearch::new(&mesh, params.clone(), options.clone()).expect("a search");
+        assert!(search.proxy.is_none(), "probed on the mesh itself");
+        search.pending[1].field = Err("rejected for the test".to_string());
+        let third = search.pending[2].field.clone().expect("a height field");
+
+        search.step().expect("the first candidate probed");
+        assert!(search.pending[0].probed.is_none(), "the unsolved candidate got a probe");
+        assert!(search.pending[1].probed.is_some(), "the third candidate's probe did not run beside the first's");
+        search.run().expect("the search");
+        assert_eq!(search.candidates()[1].rejected.as_deref(), Some("rejected for the test"));
+
+        let alone = ProbeStart { field: &third, gradient_target: None, stall_above: None };
+        let (measure, singular, _) = probe(&mut None, &mesh, &params, &options, alone).expect("no invalid parameter").expect("probed");
+        let singular_fraction = singular as f64 / mesh.vertex_count() as f64;
+        let judged = family_judgement(&measure, params.family, singular_fraction).expect("judged");
+        let candidate = &search.candidates()[2];
+        assert_eq!(candidate.score.map(f64::to_bits), Some(judged.score.to_bits()), "{candidate:?}");
+        assert_eq!(candidate.rms_error_degrees.to_bits(), measure.rms_error_degrees.to_bits());
+    }
+}
